@@ -1,0 +1,19 @@
+// Each `bdfcar` sub-command registers itself on the CLI11 parser and returns
+// the function that runs it once the arguments are parsed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <vector>
+
+namespace bdfcar::app {
+
+struct Command {
+  CLI::App* cli = nullptr;
+  std::function<int()> run;  // process exit code
+};
+using CommandList = std::vector<Command>;
+
+void addVersionCommand(CLI::App& app, CommandList& commands);
+
+}  // namespace bdfcar::app

@@ -1,0 +1,316 @@
+#include "integrator/bdf.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace bdfcar::integ {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Accumulates elapsed wall time into a timer when timing is on.
+class ScopedTimer {
+ public:
+  ScopedTimer(bool on, double& acc) : on_(on), acc_(acc) {
+    if (on_) t0_ = Clock::now();
+  }
+  ~ScopedTimer() {
+    if (on_) acc_ += std::chrono::duration<double>(Clock::now() - t0_).count();
+  }
+
+ private:
+  bool on_;
+  double& acc_;
+  Clock::time_point t0_;
+};
+
+// Number of start-up sub-steps: the first is h / 2^m with h / 2^m ~ h^2 / 1 s,
+// so its first-order local error is O(h^4); each following one doubles.
+int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std::log2(1.0 / h))), 1, 12); }
+
+}  // namespace
+
+const char* stepStatusName(StepStatus s) {
+  switch (s) {
+    case StepStatus::Ok: return "ok";
+    case StepStatus::Diverged: return "diverged";
+    case StepStatus::EvaluationFailed: return "evaluation failed";
+    case StepStatus::StateCheckFailed: return "state check failed";
+  }
+  return "?";
+}
+
+BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
+    : dae_(dae), opt_(options), n_(dae.sizes()), forward_(dae), lu_(n_.nv + n_.nc) {
+  opt_.order = std::clamp(opt_.order, 1, kMaxBdfOrder);
+  const int nv = n_.nv, nc = n_.nc, n = nv + nc;
+  ws_.resize(n_);
+  for (auto& p : hist_) p.resize(n_);
+  for (auto& d : delta_) d.setZero(nv);
+  Fq_.setZero(nv, nv);
+  Fv_.setZero(nv, nv);
+  Fa_.setZero(nv, nv);
+  J_.setZero(nc, nv);
+  A_.setZero(n, n);
+  Ainv_.setZero(n, n);
+  for (Vec* x : {&xiQ_, &xiV_, &dPred_, &vPred_, &aPred_, &d_, &v_, &a_, &rate_, &rhoQ_, &rhoV_, &tmpV_, &dq_,
+                 &dv_, &da_})
+    x->setZero(nv);
+  for (Vec* x : {&lamPred_, &lam_, &c_, &dlam_}) x->setZero(nc);
+  q_.setZero(n_.nq);
+  rhs_.setZero(n);
+  sol_.setZero(n);
+  e_.setZero(n);
+  r_.resize(n_);
+}
+
+EvalStatus BdfIntegrator::initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) {
+  SolutionPoint p;
+  p.resize(n_);
+  p.t = t0;
+  p.q = q0;
+  p.v = v0;
+  dae_.beginStep(t0, q0, v0);
+  const EvalStatus st = forward_.solve(t0, q0, v0, 0.0, 0.0, p.a, p.lambda, counters_, msg);
+  if (st != EvalStatus::Ok) return st;
+  initializeConsistent(p);
+  return EvalStatus::Ok;
+}
+
+void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
+  head_ = 0;
+  count_ = 1;
+  node(0) = p;
+  haveBlocks_ = false;
+  stepsSinceJacobian_ = 0;
+  factorizedHPrime_ = 0;
+}
+
+StepReport BdfIntegrator::step(double h) {
+  const bool due = !haveBlocks_ || (opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery);
+  const StartUp mode = opt_.startUp == StartUp::Auto ? (opt_.order >= 3 ? StartUp::Substeps : StartUp::OrderRamp)
+                                                     : opt_.startUp;
+  StepReport rep;
+  if (count_ == 1 && mode == StartUp::Substeps && opt_.order > 1) {
+    const int m = startupHalvings(h);
+    double hs = h / std::ldexp(1.0, m);
+    const double tEnd = node(0).t + h;
+    rep = substep(hs, due);
+    for (int i = 1; i <= m && rep.ok(); ++i) {
+      const double hi = (i == m) ? tEnd - node(0).t : hs;  // land exactly on t0 + h
+      rep = substep(hi, false);
+      hs *= 2;
+    }
+  } else {
+    rep = substep(h, due);
+  }
+  if (rep.ok()) {
+    ++counters_.steps;
+    ++stepsSinceJacobian_;
+  }
+  return rep;
+}
+
+EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
+  ScopedTimer timer(opt_.timing, timers_.jacobian);
+  long& cnt = counters_.jacobianResiduals;
+  EvalStatus st = stiffnessDampingBlocks(dae_, t, q_, v_, a_, lam_, Fq_, Fv_, ws_, cnt);
+  if (st == EvalStatus::Ok) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, Fa_, ws_, cnt);
+  if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, q_, J_, ws_, cnt);
+  if (st != EvalStatus::Ok) {
+    msg = ws_.msg;
+    return st;
+  }
+  ++counters_.jacobians;
+  haveBlocks_ = true;
+  stepsSinceJacobian_ = 0;
+  factorizedHPrime_ = 0;  // force a factorization with the new blocks
+  return EvalStatus::Ok;
+}
+
+void BdfIntegrator::factorize(double hp) {
+  ScopedTimer timer(opt_.timing, timers_.jacobian);
+  const int nv = n_.nv, nc = n_.nc;
+  A_.topLeftCorner(nv, nv) = Fa_ + hp * Fv_ + (hp * hp) * Fq_;
+  A_.topRightCorner(nv, nc) = J_.transpose();
+  A_.bottomLeftCorner(nc, nv) = J_;
+  A_.bottomRightCorner(nc, nc).setZero();
+  lu_.compute(A_);
+  Ainv_.noalias() = lu_.inverse();
+  ++counters_.factorizations;
+  factorizedHPrime_ = hp;
+}
+
+double BdfIntegrator::correctionNorm() const {
+  // Weighted RMS of [dq; h' dv] with weights 1 / (atol + rtol |delta|).
+  const double hp = factorizedHPrime_;
+  double s = 0;
+  for (int i = 0; i < n_.nv; ++i) {
+    const double w = 1.0 / (opt_.atol + opt_.rtol * std::abs(d_(i)));
+    const double x = dq_(i) * w, y = hp * dv_(i) * w;
+    s += x * x + y * y;
+  }
+  return std::sqrt(s / (2.0 * std::max(1, n_.nv)));
+}
+
+bool BdfIntegrator::newton(double t, const BdfCoefficients& c, StepReport& rep) {
+  const int nv = n_.nv, nc = n_.nc;
+  const double hp = c.hPrime, cj = 1.0 / hp;
+  const int maxIt = opt_.newtonIterations > 0 ? opt_.newtonIterations : opt_.maxNewtonIterations;
+  double prevNorm = 0;
+  for (int it = 1; it <= maxIt; ++it) {
+    EvalStatus st;
+    {
+      ScopedTimer timer(opt_.timing, timers_.residual);
+      dae_.retract(node(0).q, d_, q_);
+      st = dae_.residual(t, q_, v_, a_, lam_, r_, true, rep.message);
+      ++counters_.residuals;
+    }
+    if (st != EvalStatus::Ok) {
+      rep.status = StepStatus::EvaluationFailed;
+      return false;
+    }
+    ScopedTimer timer(opt_.timing, timers_.backSubstitution);
+    // BDF residuals of the current iterate.
+    dae_.localRate(d_, v_, rate_);
+    rhoQ_ = d_ - xiQ_ - hp * rate_;
+    rhoV_ = v_ - xiV_ - hp * a_;
+    // (3.8): [K* Phi_q^T; Phi_q 0][dq; h'^2 dlambda] = [-h'^2 F - h' F_v rhoQ - F_a (rhoQ + h' rhoV); -Phi]
+    tmpV_ = rhoQ_ + hp * rhoV_;
+    rhs_.head(nv).noalias() = -(hp * hp) * r_.F;
+    rhs_.head(nv).noalias() -= hp * (Fv_ * rhoQ_);
+    rhs_.head(nv).noalias() -= Fa_ * tmpV_;
+    rhs_.tail(nc) = -r_.phi;
+    sol_.noalias() = Ainv_ * rhs_;
+    dq_ = sol_.head(nv);
+    dlam_ = sol_.tail(nc) / (hp * hp);
+    // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
+    // K*-orthogonal correction that restores Phi_q v + Phi_t = 0.
+    dv_ = cj * (dq_ + rhoQ_);
+    c_.noalias() = -(J_ * dv_);
+    c_ -= r_.phiDot;
+    e_.noalias() = Ainv_.rightCols(nc) * c_;
+    dv_ += e_.head(nv);
+    // (3.14): the same for the accelerations and the acceleration constraint.
+    da_ = cj * (dv_ + rhoV_);
+    c_.noalias() = -(J_ * da_);
+    c_ -= r_.phiDDot;
+    e_.noalias() = Ainv_.rightCols(nc) * c_;
+    da_ += e_.head(nv);
+    counters_.solves += 3;
+    ++counters_.newtonIterations;
+
+    d_ += dq_;
+    v_ += dv_;
+    a_ += da_;
+    lam_ += dlam_;
+
+    const double norm = correctionNorm();
+    rep.iterations = it;
+    rep.correction = norm;
+    rep.contraction = it > 1 ? norm / prevNorm : 0.0;
+    if (!std::isfinite(norm) || !d_.allFinite() || !v_.allFinite() || !a_.allFinite() || !lam_.allFinite()) {
+      rep.status = StepStatus::Diverged;
+      rep.message.set("non-finite Newton correction at t = %.6g s (iteration %d)", t, it);
+      return false;
+    }
+    const bool converged = norm <= 1.0;
+    const bool growing = it > 1 && norm > 1.0 && norm >= prevNorm;
+    if (growing) {
+      rep.status = StepStatus::Diverged;
+      rep.message.set("Newton not contracting at t = %.6g s: correction %.3g -> %.3g (iteration %d)", t, prevNorm,
+                      norm, it);
+      return false;
+    }
+    if (opt_.newtonIterations == 0 && converged) return true;
+    prevNorm = norm;
+  }
+  if (opt_.newtonIterations == 0) {
+    rep.status = StepStatus::Diverged;
+    rep.message.set("Newton did not converge in %d iterations at t = %.6g s (correction %.3g)", maxIt, t,
+                    rep.correction);
+    return false;
+  }
+  return true;
+}
+
+StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
+  StepReport rep;
+  const double tNew = node(0).t + h;
+  const int k = std::min(opt_.order, count_);
+  const int np = std::min(k + 1, count_);  // nodes for the predictor polynomial
+  std::array<double, kMaxBdfOrder + 2> times{};
+  times[0] = tNew;
+  for (int i = 1; i <= np; ++i) times[i] = node(i - 1).t;
+  const BdfCoefficients c = bdfCoefficients(times.data(), k);
+
+  // Past nodes in local coordinates around q_{n-1}; BDF history terms.
+  xiQ_.setZero();
+  xiV_.setZero();
+  for (int i = 0; i < np; ++i) {
+    if (i == 0)
+      delta_[0].setZero();
+    else
+      dae_.localCoordinates(node(0).q, node(i).q, delta_[i]);
+  }
+  for (int i = 1; i <= k; ++i) {
+    xiQ_ += c.xi[i] * delta_[i - 1];
+    xiV_ += c.xi[i] * node(i - 1).v;
+  }
+  // Predictor: the polynomial through the last np nodes, at tNew.
+  std::array<double, kMaxBdfOrder + 2> w{};
+  lagrangeWeights(times.data() + 1, np, tNew, w.data());
+  dPred_.setZero();
+  vPred_.setZero();
+  aPred_.setZero();
+  for (int i = 0; i < np; ++i) {
+    dPred_ += w[i] * delta_[i];
+    vPred_ += w[i] * node(i).v;
+    aPred_ += w[i] * node(i).a;
+  }
+  lamPred_ = node(0).lambda;
+  dae_.retract(node(0).q, dPred_, q_);
+  dae_.beginStep(tNew, q_, vPred_);
+
+  bool fresh = false;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    d_ = dPred_;
+    v_ = vPred_;
+    a_ = aPred_;
+    lam_ = lamPred_;
+    if (jacobianDue || !haveBlocks_) {
+      dae_.retract(node(0).q, d_, q_);
+      if (evaluateJacobian(tNew, rep.message) != EvalStatus::Ok) {
+        rep.status = StepStatus::EvaluationFailed;
+        return rep;
+      }
+      fresh = true;
+      rep.jacobianEvaluated = true;
+    }
+    if (c.hPrime != factorizedHPrime_) factorize(c.hPrime);
+    rep.status = StepStatus::Ok;
+    rep.message.set("%s", "");
+    if (newton(tNew, c, rep)) break;
+    if (fresh || !opt_.refreshWhenNotContracting) return rep;
+    ++counters_.refreshes;
+    jacobianDue = true;
+  }
+  if (!rep.ok()) return rep;
+
+  // Accept: the new node becomes node(0).
+  head_ = (head_ + kHistory - 1) % kHistory;
+  count_ = std::min(count_ + 1, kHistory);
+  SolutionPoint& p = node(0);
+  p.t = tNew;
+  dae_.retract(node(1).q, d_, p.q);
+  p.v = v_;
+  p.a = a_;
+  p.lambda = lam_;
+  ++counters_.substeps;
+  if (dae_.checkState(tNew, p.q, p.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
+  return rep;
+}
+
+}  // namespace bdfcar::integ

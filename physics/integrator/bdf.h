@@ -1,0 +1,99 @@
+// Fixed-step BDF on the over-determined DAE (paper eqs. 3.3-3.14).
+//
+// Unknowns of a step: q (through local coordinates delta around q_{n-1}),
+// v, a, lambda. Each Newton iteration evaluates the residual once and solves
+// three systems with ONE factorization of
+//     A = [K* Phi_q^T; Phi_q 0],   K* = F_a + h' F_v + h'^2 F_q,
+// for the position correction (3.8), then the velocity (3.12) and
+// acceleration (3.14) corrections, which keep the BDF relations in the
+// tangent directions and impose the velocity / acceleration constraints in
+// the others. The factorization is kept as an explicit inverse, so the three
+// solves are matrix-vector products (the last two use only its constraint
+// columns). The Jacobian blocks are reused for jacobianEvery steps.
+#pragma once
+
+#include <Eigen/LU>
+#include <array>
+
+#include "integrator/bdf_coefficients.h"
+#include "integrator/dae_blocks.h"
+#include "integrator/forward_dynamics.h"
+#include "integrator/step_types.h"
+
+namespace bdfcar::integ {
+
+enum class StartUp {
+  Auto,       // OrderRamp for order <= 2, Substeps above
+  OrderRamp,  // fixed step, order raised by one per step (order-2 accurate start)
+  Substeps,   // first step split into geometrically growing sub-steps (full-order start)
+};
+
+struct BdfOptions {
+  int order = 2;                  // BDF order, 1..5
+  int newtonIterations = 2;       // fixed count (the paper: 2); 0 = iterate to tolerance
+  int maxNewtonIterations = 10;   // cap when iterating to tolerance
+  double atol = 1e-8;             // Newton tolerance on the correction, absolute (m, rad)
+  double rtol = 1e-6;             // ... relative to the motion over the step
+  int jacobianEvery = 1;          // evaluate the Jacobian every N steps; 0 = first step only
+  bool refreshWhenNotContracting = true;  // stale Jacobian + Newton not contracting: refresh, redo
+  StartUp startUp = StartUp::Auto;
+  bool timing = true;             // accumulate the Jacobian / residual / back-substitution split
+};
+
+class BdfIntegrator final : public Integrator {
+ public:
+  BdfIntegrator(Dae& dae, const BdfOptions& options);
+
+  EvalStatus initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
+  // Starts from a point whose a and lambda are already consistent.
+  void initializeConsistent(const SolutionPoint& p);
+  StepReport step(double h) override;
+
+  const SolutionPoint& current() const override { return node(0); }
+  const Counters& counters() const override { return counters_; }
+  const Timers& timers() const override { return timers_; }
+  const BdfOptions& options() const { return opt_; }
+  // Condition-free view of the last iteration matrix (for tests).
+  const Mat& iterationMatrix() const { return A_; }
+
+ private:
+  static constexpr int kHistory = kMaxBdfOrder + 2;
+
+  const SolutionPoint& node(int i) const { return hist_[(head_ + i) % kHistory]; }
+  SolutionPoint& node(int i) { return hist_[(head_ + i) % kHistory]; }
+  StepReport substep(double h, bool jacobianDue);
+  EvalStatus evaluateJacobian(double t, Message& msg);
+  void factorize(double hPrime);
+  bool newton(double t, const BdfCoefficients& c, StepReport& rep);
+  double correctionNorm() const;
+
+  Dae& dae_;
+  BdfOptions opt_;
+  DaeSizes n_;
+  Counters counters_;
+  Timers timers_;
+  ForwardDynamics forward_;
+  BlockWorkspace ws_;
+
+  std::array<SolutionPoint, kHistory> hist_;
+  int head_ = 0, count_ = 0;
+
+  // Jacobian state.
+  bool haveBlocks_ = false;
+  long stepsSinceJacobian_ = 0;
+  double factorizedHPrime_ = 0;
+  Mat Fq_, Fv_, Fa_, J_;   // (nv x nv) x3, (nc x nv)
+  Mat A_, Ainv_;           // (nv+nc)^2
+  Eigen::PartialPivLU<Mat> lu_;
+
+  // Step work vectors.
+  std::array<Vec, kMaxBdfOrder + 2> delta_;  // local coordinates of past nodes around q_{n-1}
+  Vec xiQ_, xiV_;
+  Vec dPred_, vPred_, aPred_, lamPred_;
+  Vec d_, q_, v_, a_, lam_;                  // Newton iterate
+  Vec rate_, rhoQ_, rhoV_, tmpV_, rhs_, sol_, c_, e_;
+  Vec dq_, dv_, da_, dlam_;
+  Residual r_;
+};
+
+}  // namespace bdfcar::integ

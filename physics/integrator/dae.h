@@ -1,0 +1,79 @@
+// The only view of a system the integrators have (as SUNDIALS IDA's residual):
+// sizes, the manifold structure of the positions, the residuals of the
+// over-determined DAE, and optional analytic Jacobian blocks (finite
+// differences otherwise). The BDF code never knows it is integrating a car.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdio>
+
+namespace bdfcar::integ {
+
+using Vec = Eigen::VectorXd;
+using Mat = Eigen::MatrixXd;
+
+struct DaeSizes {
+  int nq = 0;  // stored position coordinates (rotations as quaternions)
+  int nv = 0;  // velocity coordinates = tangent dimension of the positions
+  int nc = 0;  // constraint equations
+};
+
+enum class EvalStatus { Ok, Recoverable, Fatal };
+
+// A short reason attached to a non-Ok status (no allocation on the step path).
+struct Message {
+  std::array<char, 200> text{};
+  template <typename... Args>
+  void set(const char* fmt, Args... args) {
+    std::snprintf(text.data(), text.size(), fmt, args...);
+  }
+  const char* c_str() const { return text.data(); }
+};
+
+// Residuals of the over-determined DAE at one point.
+struct Residual {
+  Vec F;        // (nv) equations of motion F(q, v, a, lambda)
+  Vec phi;      // (nc) Phi(q, t)
+  Vec phiDot;   // (nc) Phi_q v + Phi_t
+  Vec phiDDot;  // (nc) Phi_q a + (Phi_q v)_q v + Phi_tt
+  void resize(const DaeSizes& s) {
+    F.setZero(s.nv);
+    phi.setZero(s.nc);
+    phiDot.setZero(s.nc);
+    phiDDot.setZero(s.nc);
+  }
+};
+
+class Dae {
+ public:
+  virtual ~Dae() = default;
+  virtual DaeSizes sizes() const = 0;
+
+  // q (+) dq, dq a tangent increment (nv).
+  virtual void retract(const Vec& q, const Vec& dq, Vec& out) const = 0;
+  // Local coordinates of q around base (nv): base (+) out = q.
+  virtual void localCoordinates(const Vec& base, const Vec& q, Vec& out) const = 0;
+  // Time derivative of local coordinates delta given velocities v (identity for vector spaces).
+  virtual void localRate(const Vec& delta, const Vec& v, Vec& out) const = 0;
+
+  // Once per step, before the Newton iterations, at the predicted state
+  // (per-step work such as terrain queries belongs here).
+  virtual void beginStep(double /*t*/, const Vec& /*q*/, const Vec& /*v*/) {}
+
+  // Residuals at (t, q, v, a, lambda). F always; the constraint levels only
+  // when withConstraints (finite-difference columns need F alone).
+  virtual EvalStatus residual(double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                              Residual& out, bool withConstraints, Message& msg) = 0;
+
+  // Optional analytic blocks; return false to get finite differences.
+  virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }
+  virtual bool constraintJacobian(double /*t*/, const Vec& /*q*/, Mat& /*Phi_q*/) { return false; }
+
+  // Sanity check of an accepted step (divergence detection beyond Newton).
+  virtual EvalStatus checkState(double /*t*/, const Vec& /*q*/, const Vec& /*v*/, Message& /*msg*/) {
+    return EvalStatus::Ok;
+  }
+};
+
+}  // namespace bdfcar::integ

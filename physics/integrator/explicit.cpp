@@ -1,0 +1,85 @@
+#include "integrator/explicit.h"
+
+namespace bdfcar::integ {
+
+ExplicitIntegrator::ExplicitIntegrator(Dae& dae, const ExplicitOptions& options)
+    : dae_(dae), opt_(options), n_(dae.sizes()), forward_(dae) {
+  cur_.resize(n_);
+  q_.setZero(n_.nq);
+  lam_.setZero(n_.nc);
+  for (Vec* x : {&d_, &dv_, &rate_}) x->setZero(n_.nv);
+  for (int i = 0; i < 4; ++i) {
+    kd_[i].setZero(n_.nv);
+    kv_[i].setZero(n_.nv);
+  }
+}
+
+EvalStatus ExplicitIntegrator::initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) {
+  cur_.t = t0;
+  cur_.q = q0;
+  cur_.v = v0;
+  dae_.beginStep(t0, q0, v0);
+  return forward_.solve(t0, q0, v0, 0.0, 0.0, cur_.a, cur_.lambda, counters_, msg);
+}
+
+EvalStatus ExplicitIntegrator::accel(double t, const Vec& delta, const Vec& v, Vec& a, Message& msg) {
+  dae_.retract(cur_.q, delta, q_);
+  return forward_.solve(t, q_, v, opt_.baumgarteAlpha, opt_.baumgarteBeta, a, lam_, counters_, msg);
+}
+
+bool ExplicitIntegrator::finiteState() const { return cur_.q.allFinite() && cur_.v.allFinite(); }
+
+StepReport ExplicitIntegrator::step(double h) {
+  StepReport rep;
+  const double t = cur_.t;
+  dae_.beginStep(t, cur_.q, cur_.v);
+  EvalStatus st = EvalStatus::Ok;
+  if (opt_.method == ExplicitMethod::SemiImplicitEuler) {
+    d_.setZero();
+    st = accel(t, d_, cur_.v, kv_[0], rep.message);
+    if (st == EvalStatus::Ok) {
+      cur_.v += h * kv_[0];
+      d_ = h * cur_.v;
+      dae_.retract(cur_.q, d_, q_);
+      cur_.q = q_;
+      cur_.a = kv_[0];
+    }
+  } else {
+    // RK4 on (delta, v) with delta' = localRate(delta, v), v' = a(q0 (+) delta, v).
+    static constexpr double c[4] = {0.0, 0.5, 0.5, 1.0};
+    for (int s = 0; s < 4 && st == EvalStatus::Ok; ++s) {
+      if (s == 0) {
+        d_.setZero();
+        dv_ = cur_.v;
+      } else {
+        d_ = (c[s] * h) * kd_[s - 1];
+        dv_ = cur_.v + (c[s] * h) * kv_[s - 1];
+      }
+      dae_.localRate(d_, dv_, kd_[s]);
+      st = accel(t + c[s] * h, d_, dv_, kv_[s], rep.message);
+    }
+    if (st == EvalStatus::Ok) {
+      d_ = (h / 6.0) * (kd_[0] + 2.0 * kd_[1] + 2.0 * kd_[2] + kd_[3]);
+      cur_.v += (h / 6.0) * (kv_[0] + 2.0 * kv_[1] + 2.0 * kv_[2] + kv_[3]);
+      dae_.retract(cur_.q, d_, q_);
+      cur_.q = q_;
+      cur_.a = kv_[3];
+    }
+  }
+  if (st != EvalStatus::Ok) {
+    rep.status = StepStatus::EvaluationFailed;
+    return rep;
+  }
+  cur_.t = t + h;
+  cur_.lambda = lam_;
+  ++counters_.steps;
+  if (!finiteState()) {
+    rep.status = StepStatus::Diverged;
+    rep.message.set("non-finite state at t = %.6g s", cur_.t);
+    return rep;
+  }
+  if (dae_.checkState(cur_.t, cur_.q, cur_.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
+  return rep;
+}
+
+}  // namespace bdfcar::integ

@@ -1,0 +1,74 @@
+// Per-evaluation workspace of a Model (as MuJoCo's mjData): inputs set by the
+// caller, then fields "computed by" each stage of the forward pass. Sized once
+// by makeData(); evaluating a model never allocates afterwards.
+#pragma once
+
+#include <vector>
+
+#include "multibody/model.h"
+
+namespace bdfcar::mb {
+
+// Prescribed value of a driver constraint at time t, with its first two time derivatives.
+struct DriverTarget {
+  double value = 0.0, rate = 0.0, accel = 0.0;
+};
+
+// A time signal for a driver constraint (rack travel, ...).
+class DriverSignal {
+ public:
+  virtual ~DriverSignal() = default;
+  virtual DriverTarget at(double t) const = 0;
+};
+
+struct Data {
+  // --- inputs ---
+  std::vector<const DriverSignal*> driverSignals;  // (nDrivers) null = held at 0
+
+  // --- computed by updatePositions (q) ---
+  std::vector<Transform> Xup;     // (nbody) parent -> body motion transform
+  std::vector<Mat3> R;            // (nbody) body axes in world
+  std::vector<Vec3> p;            // (nbody) body origin in world
+  Eigen::Matrix<double, 6, Eigen::Dynamic> S;  // (6 x nv) joint motion subspaces, body coordinates
+
+  // --- computed by updateVelocities (v) ---
+  std::vector<Vec6> vel;          // (nbody) spatial velocity (v; w), body coordinates
+  std::vector<Vec6> bias;         // (nbody) velocity-product acceleration c_J + v x S qdot
+
+  // --- computed by updateAccelerations (a) ---
+  std::vector<Vec6> acc;          // (nbody) spatial acceleration, body coordinates
+
+  // --- forces: applied wrenches accumulate here (body coordinates, at body origin) ---
+  std::vector<Vec6> fext;         // (nbody)
+  std::vector<Vec6> f;            // (nbody) joint wrench from the backward pass
+  Eigen::VectorXd jointForce;     // (nv) applied joint-space forces (drive, brake torques)
+  Eigen::VectorXd tau;            // (nv) joint-space inverse dynamics + constraint forces
+
+  // --- constraints: computed by constraintResiduals ---
+  Eigen::VectorXd phi, phiDot, phiDDot;  // (nc) the three constraint levels
+  std::vector<DriverTarget> driverTargets;  // (nDrivers) sampled at the evaluation time
+
+  // --- computed by massMatrix (CRBA) ---
+  std::vector<Mat6> Ic;           // (nbody) composite inertias
+
+  // --- spring-damper state, for telemetry: computed by applySprings ---
+  std::vector<double> springLength, springForce;  // (nspring)
+};
+
+Data makeData(const Model& model);
+
+// World pose of a body (identity for the ground).
+inline Mat3 bodyRotation(const Data& d, int body) { return body < 0 ? Mat3::Identity() : d.R[body]; }
+inline Vec3 bodyOrigin(const Data& d, int body) { return body < 0 ? Vec3::Zero() : d.p[body]; }
+
+// World position, velocity and (classical) acceleration of a point fixed in a body.
+Vec3 pointPosition(const Data& d, int body, const Vec3& local);
+Vec3 pointVelocity(const Data& d, int body, const Vec3& local);
+Vec3 pointAcceleration(const Data& d, int body, const Vec3& local);
+// World angular velocity of a body.
+Vec3 angularVelocity(const Data& d, int body);
+
+// Adds a world-frame force applied at a world point, and a world-frame torque, to a body.
+void addWorldWrench(Data& d, int body, const Vec3& point, const Vec3& force, const Vec3& torque = Vec3::Zero());
+
+}  // namespace bdfcar::mb

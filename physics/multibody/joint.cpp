@@ -1,0 +1,190 @@
+#include "multibody/joint.h"
+
+#include <cmath>
+
+namespace bdfcar::mb {
+
+Mat3 quatToMatrix(const double* wxyz) {
+  return Quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).toRotationMatrix();
+}
+
+namespace {
+
+void storeQuat(const Quat& q, double* out) {
+  const Quat n = q.normalized();
+  out[0] = n.w();
+  out[1] = n.x();
+  out[2] = n.y();
+  out[3] = n.z();
+}
+
+Quat loadQuat(const double* wxyz) { return Quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]); }
+
+}  // namespace
+
+void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj) {
+  switch (type) {
+    case JointType::Revolute:
+      Rj = rotZ(q[0]);
+      dj.setZero();
+      break;
+    case JointType::Prismatic:
+      Rj.setIdentity();
+      dj = Vec3(0, 0, q[0]);
+      break;
+    case JointType::Cylindrical:
+      Rj = rotZ(q[0]);
+      dj = Vec3(0, 0, q[1]);
+      break;
+    case JointType::Universal:
+      Rj = rotX(q[0]) * rotY(q[1]);
+      dj.setZero();
+      break;
+    case JointType::Spherical:
+      Rj = quatToMatrix(q);
+      dj.setZero();
+      break;
+    case JointType::Free:
+      dj = Vec3(q[0], q[1], q[2]);
+      Rj = quatToMatrix(q + 3);
+      break;
+  }
+}
+
+void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
+  switch (type) {
+    case JointType::Revolute:
+      Sj.resize(6, 1);
+      Sj << 0, 0, 0, 0, 0, 1;
+      break;
+    case JointType::Prismatic:
+      Sj.resize(6, 1);
+      Sj << 0, 0, 1, 0, 0, 0;
+      break;
+    case JointType::Cylindrical:  // v = (theta_dot, s_dot)
+      Sj.resize(6, 2);
+      Sj.setZero();
+      Sj(5, 0) = 1;
+      Sj(2, 1) = 1;
+      break;
+    case JointType::Universal: {  // v = (alpha_dot about parent x, beta_dot about child y)
+      Sj.resize(6, 2);
+      Sj.setZero();
+      Sj(3, 0) = std::cos(q[1]);
+      Sj(5, 0) = std::sin(q[1]);
+      Sj(4, 1) = 1;
+      break;
+    }
+    case JointType::Spherical:
+      Sj.resize(6, 3);
+      Sj.setZero();
+      Sj.bottomRows<3>().setIdentity();
+      break;
+    case JointType::Free:
+      Sj.resize(6, 6);
+      Sj.setIdentity();
+      break;
+  }
+}
+
+Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v) {
+  Vec6 c = Vec6::Zero();
+  if (type == JointType::Universal) {
+    // d/dt of the first column (cos b, 0, sin b) times alpha_dot.
+    const double ab = v[0] * v[1];
+    c(3) = -std::sin(q[1]) * ab;
+    c(5) = std::cos(q[1]) * ab;
+  }
+  return c;
+}
+
+void jointRetract(JointType type, const double* q, const double* dq, double* out) {
+  switch (type) {
+    case JointType::Revolute:
+    case JointType::Prismatic:
+      out[0] = q[0] + dq[0];
+      break;
+    case JointType::Cylindrical:
+    case JointType::Universal:
+      out[0] = q[0] + dq[0];
+      out[1] = q[1] + dq[1];
+      break;
+    case JointType::Spherical:
+      storeQuat(loadQuat(q) * expQuat(Vec3(dq[0], dq[1], dq[2])), out);
+      break;
+    case JointType::Free: {
+      const Mat3 R = quatToMatrix(q + 3);
+      const Vec3 p = Vec3(q[0], q[1], q[2]) + R * Vec3(dq[0], dq[1], dq[2]);
+      out[0] = p.x();
+      out[1] = p.y();
+      out[2] = p.z();
+      storeQuat(loadQuat(q + 3) * expQuat(Vec3(dq[3], dq[4], dq[5])), out + 3);
+      break;
+    }
+  }
+}
+
+void jointLocal(JointType type, const double* base, const double* q, double* out) {
+  switch (type) {
+    case JointType::Revolute:
+    case JointType::Prismatic:
+      out[0] = q[0] - base[0];
+      break;
+    case JointType::Cylindrical:
+    case JointType::Universal:
+      out[0] = q[0] - base[0];
+      out[1] = q[1] - base[1];
+      break;
+    case JointType::Spherical: {
+      const Vec3 th = logSO3(quatToMatrix(base).transpose() * quatToMatrix(q));
+      out[0] = th.x();
+      out[1] = th.y();
+      out[2] = th.z();
+      break;
+    }
+    case JointType::Free: {
+      const Mat3 R0 = quatToMatrix(base + 3);
+      const Vec3 dp = R0.transpose() * Vec3(q[0] - base[0], q[1] - base[1], q[2] - base[2]);
+      const Vec3 th = logSO3(R0.transpose() * quatToMatrix(q + 3));
+      for (int i = 0; i < 3; ++i) {
+        out[i] = dp(i);
+        out[3 + i] = th(i);
+      }
+      break;
+    }
+  }
+}
+
+void jointLocalRate(JointType type, const double* delta, const double* v, double* out) {
+  switch (type) {
+    case JointType::Revolute:
+    case JointType::Prismatic:
+      out[0] = v[0];
+      break;
+    case JointType::Cylindrical:
+    case JointType::Universal:
+      out[0] = v[0];
+      out[1] = v[1];
+      break;
+    case JointType::Spherical: {
+      const Vec3 r = rightJacobianInverse(Vec3(delta[0], delta[1], delta[2])) * Vec3(v[0], v[1], v[2]);
+      out[0] = r.x();
+      out[1] = r.y();
+      out[2] = r.z();
+      break;
+    }
+    case JointType::Free: {
+      // d/dt R0^T (p - p0) = R0^T R v_lin = exp(dtheta) v_lin.
+      const Vec3 th(delta[3], delta[4], delta[5]);
+      const Vec3 lin = expSO3(th) * Vec3(v[0], v[1], v[2]);
+      const Vec3 ang = rightJacobianInverse(th) * Vec3(v[3], v[4], v[5]);
+      for (int i = 0; i < 3; ++i) {
+        out[i] = lin(i);
+        out[3 + i] = ang(i);
+      }
+      break;
+    }
+  }
+}
+
+}  // namespace bdfcar::mb

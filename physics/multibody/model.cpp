@@ -1,0 +1,225 @@
+#include "multibody/model.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "multibody/model_error.h"
+
+namespace bdfcar::mb {
+
+int jointNq(JointType t) {
+  switch (t) {
+    case JointType::Revolute:
+    case JointType::Prismatic: return 1;
+    case JointType::Cylindrical:
+    case JointType::Universal: return 2;
+    case JointType::Spherical: return 4;
+    case JointType::Free: return 7;
+  }
+  return 0;
+}
+
+int jointNv(JointType t) {
+  switch (t) {
+    case JointType::Revolute:
+    case JointType::Prismatic: return 1;
+    case JointType::Cylindrical:
+    case JointType::Universal: return 2;
+    case JointType::Spherical: return 3;
+    case JointType::Free: return 6;
+  }
+  return 0;
+}
+
+const char* jointTypeName(JointType t) {
+  switch (t) {
+    case JointType::Revolute: return "revolute";
+    case JointType::Prismatic: return "prismatic";
+    case JointType::Cylindrical: return "cylindrical";
+    case JointType::Universal: return "universal";
+    case JointType::Spherical: return "spherical";
+    case JointType::Free: return "free";
+  }
+  return "?";
+}
+
+double ForceCurve::eval(double xv) const {
+  if (x.empty()) return coefficient * xv;
+  const size_t n = x.size();
+  if (n == 1) return force[0];
+  // Index of the segment holding xv (clamped to the end segments: linear extrapolation).
+  size_t i = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), xv) - x.begin());
+  i = std::clamp<size_t>(i, 1, n - 1);
+  const double s = (xv - x[i - 1]) / (x[i] - x[i - 1]);
+  return force[i - 1] + s * (force[i] - force[i - 1]);
+}
+
+double SpringDamper::force(double L, double Ldot) const {
+  double f = preload + spring.eval(freeLength - L) + damper.eval(-Ldot);
+  if (bumpLength > 0 && L < bumpLength) f += bumpStiffness * (bumpLength - L);
+  if (reboundLength > 0 && L > reboundLength) f -= reboundStiffness * (L - reboundLength);
+  return f;
+}
+
+int Model::bodyIndex(const std::string& name) const {
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+double Model::totalMass() const {
+  double m = 0;
+  for (const auto& b : bodies) m += b.mass;
+  return m;
+}
+
+namespace {
+
+void checkAxes(const Mat3& axes, const std::string& what) {
+  if (!axes.allFinite() || (axes.transpose() * axes - Mat3::Identity()).norm() > 1e-9 ||
+      axes.determinant() < 0)
+    throw ModelError(what + ": joint axes must form a right-handed orthonormal frame");
+}
+
+bool isAncestor(const Model& m, int ancestor, int body) {
+  for (int b = body; b != kGround; b = m.bodies[b].parent)
+    if (b == ancestor) return true;
+  return ancestor == kGround;
+}
+
+int commonAncestor(const Model& m, int a, int b) {
+  for (int x = a; x != kGround; x = m.bodies[x].parent)
+    if (isAncestor(m, x, b)) return x;
+  return kGround;
+}
+
+}  // namespace
+
+int ModelBuilder::addBody(Body body) {
+  const int index = static_cast<int>(model_.bodies.size());
+  const std::string what = "body '" + body.name + "'";
+  if (model_.bodyIndex(body.name) >= 0) throw ModelError(what + ": duplicate body name");
+  if (body.parent != kGround && (body.parent < 0 || body.parent >= index))
+    throw ModelError(what + ": parent must be the ground or a body defined before it");
+  if (!(body.mass > 0) || !std::isfinite(body.mass))
+    throw ModelError(what + ": mass must be positive (got " + std::to_string(body.mass) + " kg)");
+  if (!body.inertia.allFinite() || (body.inertia - body.inertia.transpose()).norm() > 1e-9 * body.inertia.norm())
+    throw ModelError(what + ": inertia must be a finite symmetric matrix");
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(body.inertia);
+  const Vec3 p = eig.eigenvalues();  // ascending
+  if (!(p(0) > 0) || p(0) + p(1) < p(2) * (1 - 1e-9))
+    throw ModelError(what + ": inertia must be positive definite and satisfy the triangle inequality"
+                            " (principal moments " + std::to_string(p(0)) + ", " + std::to_string(p(1)) +
+                     ", " + std::to_string(p(2)) + " kg m^2)");
+  if (!body.com.allFinite()) throw ModelError(what + ": centre of mass must be finite");
+  checkAxes(body.inParent.axes, what + " joint '" + body.jointName + "' parent frame");
+  checkAxes(body.inChild.axes, what + " joint '" + body.jointName + "' child frame");
+  if (body.joint == JointType::Free && body.parent != kGround)
+    throw ModelError(what + ": a free joint must connect the body to the ground");
+  body.spatialInertia = spatialInertia(body.mass, body.com, body.inertia);
+  model_.bodies.push_back(std::move(body));
+  return index;
+}
+
+int ModelBuilder::addCutJoint(CutJoint cut) {
+  const int nb = static_cast<int>(model_.bodies.size());
+  const std::string what = "cut joint '" + cut.name + "'";
+  auto checkBody = [&](int b, const char* which) {
+    if (b != kGround && (b < 0 || b >= nb)) throw ModelError(what + ": " + which + " is not a body of the model");
+  };
+  if (cut.type == CutJointType::Driver) {
+    checkBody(cut.drivenBody, "driven body");
+    if (cut.drivenBody == kGround) throw ModelError(what + ": the driven body must not be the ground");
+    const JointType t = model_.bodies[cut.drivenBody].joint;
+    if (t != JointType::Revolute && t != JointType::Prismatic)
+      throw ModelError(what + ": a driver needs a revolute or prismatic joint");
+    cut.driverSlot = model_.nDrivers++;
+  } else {
+    checkBody(cut.bodyA, "body A");
+    checkBody(cut.bodyB, "body B");
+    if (cut.bodyA == cut.bodyB) throw ModelError(what + ": both ends are on the same body");
+    if (cut.type == CutJointType::Distance && !(cut.length > 0))
+      throw ModelError(what + ": length must be positive");
+  }
+  model_.cutJoints.push_back(std::move(cut));
+  return static_cast<int>(model_.cutJoints.size()) - 1;
+}
+
+void ModelBuilder::addSpring(SpringDamper s) {
+  const int nb = static_cast<int>(model_.bodies.size());
+  for (int b : {s.bodyA, s.bodyB})
+    if (b != kGround && (b < 0 || b >= nb))
+      throw ModelError("spring '" + s.name + "': attached to a body that does not exist");
+  for (const ForceCurve* c : {&s.spring, &s.damper}) {
+    if (c->x.size() != c->force.size())
+      throw ModelError("spring '" + s.name + "': curve has different numbers of x and force values");
+    for (size_t i = 1; i < c->x.size(); ++i)
+      if (!(c->x[i] > c->x[i - 1]))
+        throw ModelError("spring '" + s.name + "': curve x values must increase strictly");
+  }
+  model_.springs.push_back(std::move(s));
+}
+
+Model ModelBuilder::build() {
+  Model m = model_;
+  int q = 0, v = 0;
+  for (auto& b : m.bodies) {
+    b.qIndex = q;
+    b.nq = jointNq(b.joint);
+    b.vIndex = v;
+    b.nv = jointNv(b.joint);
+    q += b.nq;
+    v += b.nv;
+  }
+  int row = 0;
+  for (auto& c : m.cutJoints) {
+    c.row = row;
+    c.rows = (c.type == CutJointType::Spherical) ? 3 : 1;
+    if (c.type != CutJointType::Driver) c.frameBody = commonAncestor(m, c.bodyA, c.bodyB);
+    row += c.rows;
+  }
+  m.nq = q;
+  m.nv = v;
+  m.nc = row;
+  return m;
+}
+
+Eigen::VectorXd neutralPositions(const Model& model) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(model.nq);
+  for (const auto& b : model.bodies) {
+    if (b.joint == JointType::Spherical) q(b.qIndex) = 1.0;         // quaternion w
+    if (b.joint == JointType::Free) q(b.qIndex + 3) = 1.0;          // (x y z | w x y z)
+  }
+  return q;
+}
+
+JointFrame frameAt(const Pose& body, const Vec3& worldPoint, const Mat3& worldAxes) {
+  JointFrame f;
+  f.origin = body.R.transpose() * (worldPoint - body.p);
+  f.axes = body.R.transpose() * worldAxes;
+  return f;
+}
+
+Mat3 axesWithZ(const Vec3& zIn) {
+  const Vec3 z = zIn.normalized();
+  const Vec3 helper = std::abs(z.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 x = (helper - helper.dot(z) * z).normalized();
+  Mat3 A;
+  A.col(0) = x;
+  A.col(1) = z.cross(x);
+  A.col(2) = z;
+  return A;
+}
+
+Mat3 axesWithXY(const Vec3& xIn, const Vec3& yIn) {
+  const Vec3 x = xIn.normalized();
+  const Vec3 y = (yIn - yIn.dot(x) * x).normalized();
+  Mat3 A;
+  A.col(0) = x;
+  A.col(1) = y;
+  A.col(2) = x.cross(y);
+  return A;
+}
+
+}  // namespace bdfcar::mb

@@ -1,0 +1,143 @@
+// The immutable description of a multibody system in relative (joint)
+// coordinates: a spanning tree of bodies connected by tree joints, closed
+// loops cut at cut joints (constraints with Lagrange multipliers), force
+// elements and gravity. Built once (ModelBuilder), then read-only while
+// stepping; all per-evaluation scratch lives in Data (data.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "multibody/spatial.h"
+
+namespace bdfcar::mb {
+
+constexpr int kGround = -1;
+
+// Tree joint types. Axis conventions are in the joint frames: revolute about
+// z, prismatic along z, cylindrical about and along z, universal about x of
+// the parent joint frame then y of the child joint frame, spherical any
+// rotation about the joint point, free: the body frame relative to the parent
+// joint frame (position + rotation).
+enum class JointType { Revolute, Prismatic, Cylindrical, Universal, Spherical, Free };
+
+// Number of position coordinates (rotations stored as unit quaternions).
+int jointNq(JointType t);
+// Number of velocity coordinates = relative degrees of freedom.
+int jointNv(JointType t);
+const char* jointTypeName(JointType t);
+
+// A joint frame: origin and axes (columns) expressed in a body frame.
+struct JointFrame {
+  Vec3 origin = Vec3::Zero();
+  Mat3 axes = Mat3::Identity();
+};
+
+// A body and the tree joint that connects it to its parent.
+struct Body {
+  std::string name;
+  double mass = 0.0;
+  Vec3 com = Vec3::Zero();           // centre of mass in body frame
+  Mat3 inertia = Mat3::Zero();       // rotational inertia about the COM, body axes
+  int parent = kGround;              // parent body index (kGround = the world)
+  std::string jointName;
+  JointType joint = JointType::Revolute;
+  JointFrame inParent;               // joint frame fixed in the parent body (world if ground)
+  JointFrame inChild;                // joint frame fixed in this body
+  // Filled by the builder:
+  int qIndex = 0, nq = 0;            // slice of the position vector
+  int vIndex = 0, nv = 0;            // slice of the velocity vector
+  Mat6 spatialInertia = Mat6::Zero();
+};
+
+// Cut-joint (closed-loop) constraint types.
+//  Spherical: point A on body A coincides with point B on body B (3 equations,
+//             expressed in the frame of the nearest common ancestor body).
+//  Distance:  |x_A - x_B| = length (1 equation), a massless link.
+//  Driver:    a scalar joint coordinate follows a prescribed signal (1 equation).
+enum class CutJointType { Spherical, Distance, Driver };
+
+struct CutJoint {
+  std::string name;
+  CutJointType type = CutJointType::Spherical;
+  int bodyA = kGround, bodyB = kGround;
+  Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();  // in body frames (world if ground)
+  double length = 0.0;       // Distance
+  int drivenBody = -1;       // Driver: body whose (scalar) tree joint is prescribed
+  int driverSlot = 0;        // Driver: index of the signal in Data::drivers
+  // Filled by the builder:
+  int row = 0, rows = 0;     // slice of the constraint vector
+  int frameBody = kGround;   // nearest common ancestor of A and B; Spherical equations are in its frame
+};
+
+// Force law of a spring or damper: linear coefficient, or a piecewise-linear
+// table (x, F) with linear extrapolation beyond the ends.
+struct ForceCurve {
+  double coefficient = 0.0;
+  std::vector<double> x, force;  // empty = linear
+  double eval(double x) const;
+};
+
+// Point-to-point spring-damper with optional bump and rebound stops.
+// Positive force pushes the two points apart. Spring force is a function of
+// compression (freeLength - L), damper force of the compression rate (-dL/dt).
+struct SpringDamper {
+  std::string name;
+  int bodyA = kGround, bodyB = kGround;
+  Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();
+  double freeLength = 0.0;
+  double preload = 0.0;          // constant force added (N, + pushes apart)
+  ForceCurve spring;             // force vs compression (m)
+  ForceCurve damper;             // force vs compression rate (m/s)
+  double bumpLength = 0.0;       // bump stop engages when L < bumpLength (0 = none)
+  double bumpStiffness = 0.0;    // N/m
+  double reboundLength = 0.0;    // rebound stop engages when L > reboundLength (0 = none)
+  double reboundStiffness = 0.0;
+  // Total force (+ = apart) at length L and rate dL/dt.
+  double force(double length, double lengthRate) const;
+};
+
+struct Model {
+  std::vector<Body> bodies;          // topological order: parent index < own index
+  std::vector<CutJoint> cutJoints;
+  std::vector<SpringDamper> springs;
+  Vec3 gravity = Vec3(0, 0, -9.81);
+  int nq = 0, nv = 0, nc = 0;        // positions, velocities (= relative coordinates), constraint rows
+  int nDrivers = 0;
+
+  int bodyIndex(const std::string& name) const;  // -1 if absent
+  double totalMass() const;
+};
+
+// Builds a Model with checked indices; throws ModelError with a message
+// naming the offending element.
+class ModelBuilder {
+ public:
+  int addBody(Body body);
+  int addCutJoint(CutJoint cut);
+  void addSpring(SpringDamper s);
+  void setGravity(const Vec3& g) { model_.gravity = g; }
+  Model build();  // validates, assigns coordinate and row slices
+
+ private:
+  Model model_;
+};
+
+// Neutral (zero-displacement) position vector: identity quaternions, zeros.
+Eigen::VectorXd neutralPositions(const Model& model);
+
+// Design-configuration helpers: build joint frames from world positions.
+struct Pose {
+  Mat3 R = Mat3::Identity();
+  Vec3 p = Vec3::Zero();
+};
+// The joint frame, fixed in a body whose design pose is `body`, that sits at
+// the world point with the world axes at design (the joint is then at zero).
+JointFrame frameAt(const Pose& body, const Vec3& worldPoint, const Mat3& worldAxes = Mat3::Identity());
+// A right-handed orthonormal frame whose z axis is along `z`.
+Mat3 axesWithZ(const Vec3& z);
+// A right-handed orthonormal frame whose x axis is along `x` and y axis along
+// the part of `y` orthogonal to x.
+Mat3 axesWithXY(const Vec3& x, const Vec3& y);
+
+}  // namespace bdfcar::mb

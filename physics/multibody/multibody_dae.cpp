@@ -1,0 +1,111 @@
+#include "multibody/multibody_dae.h"
+
+#include <cmath>
+
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/kinematics.h"
+
+namespace bdfcar::mb {
+
+MultibodyDae::MultibodyDae(const Model& model) : model_(model), data_(makeData(model)) {
+  zeroV_.setZero(model.nv);
+}
+
+void MultibodyDae::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
+  mb::retract(model_, q, dq, out);
+}
+
+void MultibodyDae::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
+  mb::localCoordinates(model_, base, q, out);
+}
+
+void MultibodyDae::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
+  mb::localRate(model_, delta, v, out);
+}
+
+void MultibodyDae::applyForces(double t) {
+  clearForces(model_, data_);
+  data_.jointForce.setZero();
+  applyGravity(model_, data_);
+  applySprings(model_, data_);
+  for (ForceProvider* p : providers_) p->apply(model_, data_, t);
+}
+
+void MultibodyDae::evaluateKinematics(double t, const integ::Vec& q, const integ::Vec& v) {
+  sampleDrivers(model_, data_, t);
+  updatePositions(model_, q, data_);
+  updateVelocities(model_, q, v, data_);
+  updateAccelerations(model_, zeroV_, data_);
+  applyForces(t);
+}
+
+void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec& v) {
+  if (providers_.empty()) return;
+  updatePositions(model_, q, data_);
+  updateVelocities(model_, q, v, data_);
+  for (ForceProvider* p : providers_) p->beginStep(model_, data_, t);
+}
+
+integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                                         const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
+                                         integ::Message& msg) {
+  sampleDrivers(model_, data_, t);
+  updatePositions(model_, q, data_);
+  updateVelocities(model_, q, v, data_);
+  updateAccelerations(model_, a, data_);
+  applyForces(t);
+  applyConstraintWrenches(model_, lambda, data_);
+  inverseDynamics(model_, data_);
+  addDriverReactions(model_, lambda, data_);
+  out.F = data_.tau - data_.jointForce;
+  if (withConstraints) {
+    constraintResiduals(model_, q, v, a, data_);
+    out.phi = data_.phi;
+    out.phiDot = data_.phiDot;
+    out.phiDDot = data_.phiDDot;
+  }
+  if (!out.F.allFinite()) {
+    msg.set("non-finite equations of motion at t = %.6g s", t);
+    return integ::EvalStatus::Recoverable;
+  }
+  return integ::EvalStatus::Ok;
+}
+
+bool MultibodyDae::massMatrix(double /*t*/, const integ::Vec& q, integ::Mat& Fa) {
+  updatePositions(model_, q, data_);
+  mb::massMatrix(model_, data_, Fa);
+  return true;
+}
+
+bool MultibodyDae::constraintJacobian(double /*t*/, const integ::Vec& q, integ::Mat& Phi_q) {
+  updatePositions(model_, q, data_);
+  mb::constraintJacobian(model_, data_, Phi_q);
+  return true;
+}
+
+integ::EvalStatus MultibodyDae::checkState(double t, const integ::Vec& q, const integ::Vec& v,
+                                           integ::Message& msg) {
+  if (!q.allFinite() || !v.allFinite()) {
+    msg.set("non-finite state at t = %.6g s", t);
+    return integ::EvalStatus::Fatal;
+  }
+  for (int i = 0; i < model_.nv; ++i)
+    if (std::abs(v(i)) > limits_.maxVelocity) {
+      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
+      return integ::EvalStatus::Fatal;
+    }
+  sampleDrivers(model_, data_, t);
+  updatePositions(model_, q, data_);
+  constraintPositions(model_, q, data_);
+  for (const CutJoint& c : model_.cutJoints)
+    for (int r = 0; r < c.rows; ++r)
+      if (std::abs(data_.phi(c.row + r)) > limits_.maxConstraintViolation) {
+        msg.set("constraint '%s' violated by %.3g (limit %.3g) at t = %.6g s", c.name.c_str(), data_.phi(c.row + r),
+                limits_.maxConstraintViolation, t);
+        return integ::EvalStatus::Fatal;
+      }
+  return integ::EvalStatus::Ok;
+}
+
+}  // namespace bdfcar::mb

@@ -1,0 +1,66 @@
+// A multibody Model seen by the integrators as a DAE: residual (recursive
+// Newton-Euler + cut-joint constraints at three levels), analytic F_a and
+// Phi_q, and the manifold structure of the joint coordinates. Extra forces
+// (tyres, drive torques) come in through ForceProvider.
+#pragma once
+
+#include <vector>
+
+#include "integrator/dae.h"
+#include "multibody/data.h"
+
+namespace bdfcar::mb {
+
+// Applies forces that are not part of the Model (tyres, drive and brake torques).
+class ForceProvider {
+ public:
+  virtual ~ForceProvider() = default;
+  // Once per step at the predicted state (positions and velocities in data are current).
+  virtual void beginStep(const Model& /*model*/, const Data& /*data*/, double /*t*/) {}
+  // Adds wrenches to data.fext and joint forces to data.jointForce. Positions
+  // and velocities in data are current.
+  virtual void apply(const Model& model, Data& data, double t) = 0;
+};
+
+struct StateLimits {
+  double maxConstraintViolation = 1e-3;  // |Phi| (m or rad) beyond which a state has diverged
+  double maxVelocity = 1e4;              // |v_i| (m/s, rad/s)
+};
+
+class MultibodyDae final : public integ::Dae {
+ public:
+  explicit MultibodyDae(const Model& model);
+
+  void addForceProvider(ForceProvider* p) { providers_.push_back(p); }
+  void setDriverSignal(int slot, const DriverSignal* s) { data_.driverSignals.at(slot) = s; }
+  void setLimits(const StateLimits& l) { limits_ = l; }
+  const Model& model() const { return model_; }
+  Data& data() { return data_; }
+  const Data& data() const { return data_; }
+
+  // Fills data() with kinematics and forces at (t, q, v) (a = 0), for output.
+  void evaluateKinematics(double t, const integ::Vec& q, const integ::Vec& v);
+
+  integ::DaeSizes sizes() const override { return {model_.nq, model_.nv, model_.nc}; }
+  void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
+  void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
+  void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
+  void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
+  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
+                             integ::Message& msg) override;
+  bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
+  bool constraintJacobian(double t, const integ::Vec& q, integ::Mat& Phi_q) override;
+  integ::EvalStatus checkState(double t, const integ::Vec& q, const integ::Vec& v, integ::Message& msg) override;
+
+ private:
+  void applyForces(double t);
+
+  const Model& model_;
+  Data data_;
+  std::vector<ForceProvider*> providers_;
+  StateLimits limits_;
+  integ::Vec zeroV_;
+};
+
+}  // namespace bdfcar::mb

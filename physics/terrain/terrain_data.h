@@ -1,0 +1,41 @@
+// A terrain asset as plain data, loaded once from assets/terrain/*.toml and
+// shared by the physics (ray queries) and the renderer (the same triangles).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace bdfcar::terrain {
+
+enum class TerrainKind { Plane, Mesh, Heightfield };
+
+// Road painting for the renderer (no effect on physics).
+struct RoadMarkings {
+  bool present = false;
+  double startX = -50, endX = 1000;  // road extent along world x, m
+  double centreY = 0.0;              // lateral position of the road centre, m
+  int lanes = 2;
+  double laneWidth = 3.5;            // m
+};
+
+struct TerrainData {
+  std::string name;
+  std::string sourceFile;            // the .toml it came from
+  TerrainKind kind = TerrainKind::Plane;
+  double friction = 0.8;
+  // Plane.
+  Eigen::Vector3d planePoint = Eigen::Vector3d::Zero();
+  Eigen::Vector3d planeNormal = Eigen::Vector3d::UnitZ();
+  // Mesh: world coordinates (m, z up) and triangles (counter-clockwise seen from above).
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  // Heightfield: heights[row * cols + col] at (x0 + col * dx, y0 + row * dy).
+  int rows = 0, cols = 0;
+  double x0 = 0, y0 = 0, dx = 1, dy = 1;
+  std::vector<double> heights;
+  RoadMarkings road;
+};
+
+}  // namespace bdfcar::terrain

@@ -1,0 +1,69 @@
+// What the renderer and the HUD read from a running vehicle: world poses of
+// the chassis and wheels, suspension members as segments, and the figures a
+// driver wants to see. Plain data, copied out of the physics once per frame.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace bdfcar::vehicle {
+
+struct BodyPose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();           // world, m
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity(); // body axes in world
+};
+
+enum class LinkKind { Arm, Strut, TieRod, Link, Rack, Spring };
+
+// A suspension member drawn as a cylinder between two world points.
+struct LinkSegment {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
+  double radius = 0.015;
+  LinkKind kind = LinkKind::Link;
+};
+
+// Wheel index order everywhere: 0 FL, 1 FR, 2 RL, 3 RR.
+struct WheelView {
+  BodyPose pose;                    // spindle frame: y = spin axis (pointing left on both sides), x forward
+  double radius = 0.31, width = 0.235;
+  Eigen::Vector3d contactPoint = Eigen::Vector3d::Zero();
+  double normalForce = 0.0;         // N
+  bool inContact = false;
+};
+
+// Static geometry of the car body for drawing (from the vehicle file).
+struct VehicleGeometry {
+  std::string bodyMesh;             // path of the body mesh asset (OBJ), chassis frame, m; empty = a box
+  Eigen::Vector3d bodyColour = Eigen::Vector3d(0.75, 0.08, 0.08);
+  double length = 4.6, width = 1.9, height = 1.4;  // m, bounding box of the body
+  double wheelbase = 2.46, trackFront = 2.2, trackRear = 1.9;
+  double wheelRadius = 0.3099, wheelWidth = 0.235;
+  Eigen::Vector3d bodyOffset = Eigen::Vector3d::Zero();  // body box centre in chassis frame
+};
+
+struct VehicleView {
+  double time = 0.0;                // s
+  BodyPose chassis;                 // chassis reference frame (x forward, y left, z up)
+  std::array<WheelView, 4> wheels;
+  std::vector<LinkSegment> links;   // suspension members, world coordinates
+};
+
+// Figures for the heads-up display.
+struct HudInfo {
+  double time = 0.0;                // s
+  double speed = 0.0;               // m/s (the HUD shows km/h)
+  double steeringWheelAngle = 0.0;  // rad (the HUD shows degrees)
+  double lateralAcceleration = 0.0; // m/s^2
+  double yawRate = 0.0;             // rad/s
+  double realTimeFactor = 0.0;      // simulated / wall time
+  double stepTime = 0.0;            // s of wall time per 10 ms physics step
+  double throttle = 0.0, brake = 0.0;  // 0..1
+  int coneHits = -1;                // -1 = not on a cone course
+  double courseTime = -1.0;         // s, -1 = not timing
+  std::string message;              // status line (paused, recording, diverged, ...)
+};
+
+}  // namespace bdfcar::vehicle
