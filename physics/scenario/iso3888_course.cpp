@@ -1,0 +1,58 @@
+#include "scenario/iso3888_course.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace bdfcar::scenario {
+
+Iso3888Course makeIso3888Course(double w, double startX, double centreY) {
+  Iso3888Course c;
+  c.vehicleWidth = w;
+  const double w1 = 1.1 * w + 0.25, w3 = 1.2 * w + 0.25, w5 = 1.3 * w + 0.25;
+  const double rightEdge = centreY - 0.5 * w1;  // datum: entry lane right-hand cone line
+  double x = startX;
+  c.lanes[0] = {x, x + 15.0, centreY, w1};
+  x += 15.0 + 30.0;
+  c.lanes[1] = {x, x + 25.0, rightEdge + 3.5 + 0.5 * w3, w3};
+  x += 25.0 + 25.0;
+  c.lanes[2] = {x, x + 15.0, rightEdge + 0.5 * w5, w5};
+  c.startX = startX;
+  c.endX = x + 15.0;
+  return c;
+}
+
+const CourseLane* Iso3888Course::laneAt(double x) const {
+  for (const CourseLane& l : lanes)
+    if (x >= l.x0 && x <= l.x1) return &l;
+  return nullptr;
+}
+
+bool Iso3888Course::contains(double x, double y) const {
+  const CourseLane* l = laneAt(x);
+  return !l || std::abs(y - l->centreY) <= 0.5 * l->width;
+}
+
+std::vector<Eigen::Vector3d> Iso3888Course::cones(double spacing) const {
+  std::vector<Eigen::Vector3d> out;
+  for (const CourseLane& l : lanes) {
+    const int n = std::max(1, static_cast<int>(std::ceil((l.x1 - l.x0) / spacing)));
+    for (int i = 0; i <= n; ++i) {
+      const double x = l.x0 + (l.x1 - l.x0) * i / n;
+      out.emplace_back(x, l.centreY + 0.5 * l.width, 0.0);
+      out.emplace_back(x, l.centreY - 0.5 * l.width, 0.0);
+    }
+  }
+  return out;
+}
+
+double Iso3888Course::referenceY(double x) const {
+  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - std::cos(std::numbers::pi * s)); };
+  const CourseLane &a = lanes[0], &b = lanes[1], &e = lanes[2];
+  if (x <= a.x1) return a.centreY;
+  if (x < b.x0) return blend(a.centreY, b.centreY, (x - a.x1) / (b.x0 - a.x1));
+  if (x <= b.x1) return b.centreY;
+  if (x < e.x0) return blend(b.centreY, e.centreY, (x - b.x1) / (e.x0 - b.x1));
+  return e.centreY;
+}
+
+}  // namespace bdfcar::scenario

@@ -1,0 +1,41 @@
+// Geometry of the ISO 3888-1 double-lane-change course, as this project
+// specifies it: five sections of 15 / 30 / 25 / 25 / 15 m; lane widths
+// 1.1 w + 0.25 (entry), 1.2 w + 0.25 (side lane), 1.3 w + 0.25 (exit), w the
+// vehicle width. The right-hand cone line of the entry lane is the datum: the
+// side lane's centre lies 3.5 m + half its width to the left of it, and the
+// exit lane shares the entry lane's right-hand cone line. The course starts at
+// x = startX; the entry lane is centred on y = centreY. Plain geometry, used
+// by the path follower, the pass/fail judge and the renderer alike.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace bdfcar::scenario {
+
+struct CourseLane {
+  double x0 = 0, x1 = 0;   // extent along x, m
+  double centreY = 0;      // m
+  double width = 0;        // m
+};
+
+struct Iso3888Course {
+  double vehicleWidth = 0;
+  std::array<CourseLane, 3> lanes;  // entry, side, exit (sections 1, 3, 5)
+  double startX = 0, endX = 0;
+
+  // Lane holding x, or nullptr in the free transition sections 2 and 4.
+  const CourseLane* laneAt(double x) const;
+  // True if the point is inside the course (always true in sections 2 and 4).
+  bool contains(double x, double y) const;
+  // Cone positions (ground level) along both boundaries of the three lanes,
+  // spaced at most `spacing` m apart.
+  std::vector<Eigen::Vector3d> cones(double spacing = 2.5) const;
+  // A smooth reference centreline y(x) through the lane centres (cosine blends over sections 2 and 4).
+  double referenceY(double x) const;
+};
+
+Iso3888Course makeIso3888Course(double vehicleWidth, double startX = 0.0, double centreY = 0.0);
+
+}  // namespace bdfcar::scenario
