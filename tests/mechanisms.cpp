@@ -62,6 +62,7 @@ FourBar fourBar(double a, double b, double c, double d, double crank0) {
   fb.rocker0 = (cz >= cz2) ? rocker0 : std::atan2(cz2, cx2 - d);
 
   mb::ModelBuilder mbld;
+  mbld.setGravity(Vec3::Zero());  // lying flat: only inertia drives it
   const Mat3 axes = mb::axesWithZ(Vec3::UnitY());
   const Pose crankPose{aboutY(crank0), Vec3::Zero()};
   const Pose rockerPose{aboutY(fb.rocker0), Vec3(d, 0, 0)};

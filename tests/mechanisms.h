@@ -13,7 +13,7 @@ mb::Model pendulum(double length, double mass, double radiusOfGyration);
 // Planar four-bar with a massless coupler (distance cut joint): crank a at
 // the origin, rocker c at (d, 0, 0), coupler b, all joints about world y.
 // The crank starts at angle crank0 (radians, about +y), the rocker at the
-// open-branch angle that closes the loop.
+// open-branch angle that closes the loop. No gravity (the linkage lies flat).
 struct FourBar {
   mb::Model model;
   double a, b, c, d, crank0, rocker0;

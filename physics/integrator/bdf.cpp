@@ -49,8 +49,7 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   ws_.resize(n_);
   for (auto& p : hist_) p.resize(n_);
   for (auto& d : delta_) d.setZero(nv);
-  Fq_.setZero(nv, nv);
-  Fv_.setZero(nv, nv);
+  dx_.resize(n_);
   Fa_.setZero(nv, nv);
   J_.setZero(nc, nv);
   A_.setZero(n, n);
@@ -116,7 +115,7 @@ StepReport BdfIntegrator::step(double h) {
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   long& cnt = counters_.jacobianResiduals;
-  EvalStatus st = stiffnessDampingBlocks(dae_, t, q_, v_, a_, lam_, Fq_, Fv_, ws_, cnt);
+  EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt);
   if (st == EvalStatus::Ok) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, Fa_, ws_, cnt);
   if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, q_, J_, ws_, cnt);
   if (st != EvalStatus::Ok) {
@@ -133,7 +132,7 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
 void BdfIntegrator::factorize(double hp) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   const int nv = n_.nv, nc = n_.nc;
-  A_.topLeftCorner(nv, nv) = Fa_ + hp * Fv_ + (hp * hp) * Fq_;
+  A_.topLeftCorner(nv, nv) = Fa_ + hp * dx_.Fv + (hp * hp) * dx_.Fq;
   A_.topRightCorner(nv, nc) = J_.transpose();
   A_.bottomLeftCorner(nc, nv) = J_;
   A_.bottomRightCorner(nc, nc).setZero();
@@ -180,22 +179,26 @@ bool BdfIntegrator::newton(double t, const BdfCoefficients& c, StepReport& rep) 
     // (3.8): [K* Phi_q^T; Phi_q 0][dq; h'^2 dlambda] = [-h'^2 F - h' F_v rhoQ - F_a (rhoQ + h' rhoV); -Phi]
     tmpV_ = rhoQ_ + hp * rhoV_;
     rhs_.head(nv).noalias() = -(hp * hp) * r_.F;
-    rhs_.head(nv).noalias() -= hp * (Fv_ * rhoQ_);
+    rhs_.head(nv).noalias() -= hp * (dx_.Fv * rhoQ_);
     rhs_.head(nv).noalias() -= Fa_ * tmpV_;
     rhs_.tail(nc) = -r_.phi;
     sol_.noalias() = Ainv_ * rhs_;
     dq_ = sol_.head(nv);
     dlam_ = sol_.tail(nc) / (hp * hp);
     // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
-    // K*-orthogonal correction that restores Phi_q v + Phi_t = 0.
+    // K*-orthogonal correction that restores the linearised velocity
+    // constraint Phi_q v + Phi_t + (Phi_q v)_q dq + Phi_q dv = 0.
     dv_ = cj * (dq_ + rhoQ_);
     c_.noalias() = -(J_ * dv_);
+    c_.noalias() -= dx_.phiDotQ * dq_;
     c_ -= r_.phiDot;
     e_.noalias() = Ainv_.rightCols(nc) * c_;
     dv_ += e_.head(nv);
-    // (3.14): the same for the accelerations and the acceleration constraint.
+    // (3.14): the same for the accelerations and g + g_q dq + g_v dv + Phi_q da = 0.
     da_ = cj * (dv_ + rhoV_);
     c_.noalias() = -(J_ * da_);
+    c_.noalias() -= dx_.phiDDotQ * dq_;
+    c_.noalias() -= dx_.phiDDotV * dv_;
     c_ -= r_.phiDDot;
     e_.noalias() = Ainv_.rightCols(nc) * c_;
     da_ += e_.head(nv);
@@ -289,7 +292,9 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
       fresh = true;
       rep.jacobianEvaluated = true;
     }
-    if (c.hPrime != factorizedHPrime_) factorize(c.hPrime);
+    // Times accumulate round-off, so h' of equal steps differs in the last
+    // bits: refactor only for a real change of step or order.
+    if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
     rep.status = StepStatus::Ok;
     rep.message.set("%s", "");
     if (newton(tNew, c, rep)) break;

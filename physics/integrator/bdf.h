@@ -82,7 +82,8 @@ class BdfIntegrator final : public Integrator {
   bool haveBlocks_ = false;
   long stepsSinceJacobian_ = 0;
   double factorizedHPrime_ = 0;
-  Mat Fq_, Fv_, Fa_, J_;   // (nv x nv) x3, (nc x nv)
+  StateDerivatives dx_;    // F_q, F_v and the constraint-level derivatives
+  Mat Fa_, J_;             // (nv x nv), (nc x nv)
   Mat A_, Ainv_;           // (nv+nc)^2
   Eigen::PartialPivLU<Mat> lu_;
 

@@ -61,9 +61,17 @@ EvalStatus constraintJacobianBlock(Dae& dae, double t, const Vec& q, Mat& J, Blo
   return EvalStatus::Ok;
 }
 
-EvalStatus stiffnessDampingBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                                  Mat& Fq, Mat& Fv, BlockWorkspace& ws, long& count) {
-  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, false, ws.msg);
+void StateDerivatives::resize(const DaeSizes& s) {
+  Fq.setZero(s.nv, s.nv);
+  Fv.setZero(s.nv, s.nv);
+  phiDotQ.setZero(s.nc, s.nv);
+  phiDDotQ.setZero(s.nc, s.nv);
+  phiDDotV.setZero(s.nc, s.nv);
+}
+
+EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                                 StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
   ++count;
   if (st != EvalStatus::Ok) return st;
   ws.dq.setZero();
@@ -71,18 +79,21 @@ EvalStatus stiffnessDampingBlocks(Dae& dae, double t, const Vec& q, const Vec& v
   for (int i = 0; i < v.size(); ++i) {
     ws.dq(i) = kFdStep;
     dae.retract(q, ws.dq, ws.q);
-    st = dae.residual(t, ws.q, v, a, lambda, ws.r1, false, ws.msg);
+    st = dae.residual(t, ws.q, v, a, lambda, ws.r1, true, ws.msg);
     ++count;
     if (st != EvalStatus::Ok) return st;
-    Fq.col(i) = (ws.r1.F - ws.r0.F) / kFdStep;
+    out.Fq.col(i) = (ws.r1.F - ws.r0.F) / kFdStep;
+    out.phiDotQ.col(i) = (ws.r1.phiDot - ws.r0.phiDot) / kFdStep;
+    out.phiDDotQ.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / kFdStep;
     ws.dq(i) = 0;
 
     const double h = velocityIncrement(v(i));
     ws.v(i) = v(i) + h;
-    st = dae.residual(t, q, ws.v, a, lambda, ws.r1, false, ws.msg);
+    st = dae.residual(t, q, ws.v, a, lambda, ws.r1, true, ws.msg);
     ++count;
     if (st != EvalStatus::Ok) return st;
-    Fv.col(i) = (ws.r1.F - ws.r0.F) / h;
+    out.Fv.col(i) = (ws.r1.F - ws.r0.F) / h;
+    out.phiDDotV.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / h;
     ws.v(i) = v(i);
   }
   return EvalStatus::Ok;

@@ -19,8 +19,16 @@ EvalStatus massMatrixBlock(Dae& dae, double t, const Vec& q, const Vec& v, const
 // Phi_q.
 EvalStatus constraintJacobianBlock(Dae& dae, double t, const Vec& q, Mat& Phi_q, BlockWorkspace& ws,
                                    long& residualCount);
-// F_q and F_v by forward differences of F (2 nv residual evaluations).
-EvalStatus stiffnessDampingBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                                  Mat& Fq, Mat& Fv, BlockWorkspace& ws, long& residualCount);
+// Derivatives of the residual by forward differences (2 nv residual
+// evaluations): F_q, F_v, and the constraint-level terms that linearise the
+// velocity and acceleration constraints in eqs. 3.12 and 3.14:
+// (Phi_q v + Phi_t)_q, g_q and g_v with g = Phi_q a + (Phi_q v)_q v + Phi_tt.
+struct StateDerivatives {
+  Mat Fq, Fv;                       // (nv x nv)
+  Mat phiDotQ, phiDDotQ, phiDDotV;  // (nc x nv)
+  void resize(const DaeSizes& s);
+};
+EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                                 StateDerivatives& out, BlockWorkspace& ws, long& residualCount);
 
 }  // namespace bdfcar::integ
