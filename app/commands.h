@@ -15,5 +15,7 @@ struct Command {
 using CommandList = std::vector<Command>;
 
 void addVersionCommand(CLI::App& app, CommandList& commands);
+void addInfoCommand(CLI::App& app, CommandList& commands);
+void addRunCommand(CLI::App& app, CommandList& commands);
 
 }  // namespace bdfcar::app

@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   CommandList commands;
   addVersionCommand(app, commands);
+  addInfoCommand(app, commands);
+  addRunCommand(app, commands);
   CLI11_PARSE(app, argc, argv);
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();

@@ -61,6 +61,10 @@ class Dae {
   // (per-step work such as terrain queries belongs here).
   virtual void beginStep(double /*t*/, const Vec& /*q*/, const Vec& /*v*/) {}
 
+  // Once per accepted step, with the accepted state (advance states that a
+  // force law owns, e.g. tyre transient slips, backward Euler over the step).
+  virtual void acceptStep(double /*t*/, const Vec& /*q*/, const Vec& /*v*/) {}
+
   // Residuals at (t, q, v, a, lambda). F always; the constraint levels only
   // when withConstraints (finite-difference columns need F alone).
   virtual EvalStatus residual(double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,

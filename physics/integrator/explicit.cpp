@@ -73,6 +73,7 @@ StepReport ExplicitIntegrator::step(double h) {
   cur_.t = t + h;
   cur_.lambda = lam_;
   ++counters_.steps;
+  dae_.acceptStep(cur_.t, cur_.q, cur_.v);
   if (!finiteState()) {
     rep.status = StepStatus::Diverged;
     rep.message.set("non-finite state at t = %.6g s", cur_.t);

@@ -117,7 +117,11 @@ int ModelBuilder::addBody(Body body) {
   checkAxes(body.inChild.axes, what + " joint '" + body.jointName + "' child frame");
   if (body.joint == JointType::Free && body.parent != kGround)
     throw ModelError(what + ": a free joint must connect the body to the ground");
-  body.spatialInertia = spatialInertia(body.mass, body.com, body.inertia);
+  if (!(body.rotorInertia >= 0) || !std::isfinite(body.rotorInertia))
+    throw ModelError(what + ": rotor inertia must be non-negative");
+  const Vec3 axis = body.rotorAxis.normalized();
+  body.spatialInertia =
+      spatialInertia(body.mass, body.com, body.inertia + body.rotorInertia * axis * axis.transpose());
   model_.bodies.push_back(std::move(body));
   return index;
 }

@@ -39,6 +39,11 @@ struct Body {
   double mass = 0.0;
   Vec3 com = Vec3::Zero();           // centre of mass in body frame
   Mat3 inertia = Mat3::Zero();       // rotational inertia about the COM, body axes
+  // A rotor spinning with the body about rotorAxis (body frame, through the
+  // COM), e.g. an axle shaft tied to a wheel's spin: inertia about that axis
+  // only, so it is not checked as a rigid body.
+  double rotorInertia = 0.0;
+  Vec3 rotorAxis = Vec3::UnitY();
   int parent = kGround;              // parent body index (kGround = the world)
   std::string jointName;
   JointType joint = JointType::Revolute;

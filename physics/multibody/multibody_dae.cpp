@@ -47,6 +47,14 @@ void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec& v)
   for (ForceProvider* p : providers_) p->beginStep(model_, data_, t);
 }
 
+void MultibodyDae::acceptStep(double t, const integ::Vec& q, const integ::Vec& v) {
+  if (providers_.empty()) return;
+  sampleDrivers(model_, data_, t);
+  updatePositions(model_, q, data_);
+  updateVelocities(model_, q, v, data_);
+  for (ForceProvider* p : providers_) p->acceptStep(model_, data_, t);
+}
+
 integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
                                          const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
                                          integ::Message& msg) {

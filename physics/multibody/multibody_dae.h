@@ -20,6 +20,8 @@ class ForceProvider {
   // Adds wrenches to data.fext and joint forces to data.jointForce. Positions
   // and velocities in data are current.
   virtual void apply(const Model& model, Data& data, double t) = 0;
+  // Once per accepted step (positions and velocities in data are the accepted ones).
+  virtual void acceptStep(const Model& /*model*/, const Data& /*data*/, double /*t*/) {}
 };
 
 struct StateLimits {
@@ -46,6 +48,7 @@ class MultibodyDae final : public integ::Dae {
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
   void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
   void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
+  void acceptStep(double t, const integ::Vec& q, const integ::Vec& v) override;
   integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
                              const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
                              integ::Message& msg) override;

@@ -1,0 +1,67 @@
+// `bdfcar info VEHICLE.toml`: bodies, joints, cut joints and the coordinate,
+// constraint and degree-of-freedom counts of a vehicle file.
+#include <cstdio>
+
+#include "cli_errors.h"
+#include "commands.h"
+#include "multibody/model.h"
+#include "vehicle/vehicle_builder.h"
+#include "vehicle/vehicle_file.h"
+
+namespace bdfcar::app {
+
+namespace {
+
+const char* cutTypeName(mb::CutJointType t) {
+  switch (t) {
+    case mb::CutJointType::Spherical: return "spherical";
+    case mb::CutJointType::Distance: return "distance";
+    case mb::CutJointType::Driver: return "driver";
+  }
+  return "?";
+}
+
+int runInfo(const std::string& path) {
+  const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path));
+  const mb::Model& m = v.model;
+  std::printf("%s (%s)\n", v.spec.name.c_str(), path.c_str());
+  if (!v.spec.description.empty()) std::printf("  %s\n", v.spec.description.c_str());
+  std::printf("\nbodies and tree joints (%zu):\n", m.bodies.size());
+  std::printf("  %-18s %9s  %-11s %-18s %s\n", "body", "mass kg", "joint", "parent", "coordinates");
+  for (const mb::Body& b : m.bodies)
+    std::printf("  %-18s %9.3f  %-11s %-18s %d\n", b.name.c_str(), b.mass, mb::jointTypeName(b.joint),
+                b.parent < 0 ? "(ground)" : m.bodies[b.parent].name.c_str(), b.nv);
+  std::printf("\ncut joints (%zu):\n", m.cutJoints.size());
+  for (const mb::CutJoint& c : m.cutJoints) {
+    if (c.type == mb::CutJointType::Driver) {
+      std::printf("  %-18s %-10s prescribes '%s' (%d equation)\n", c.name.c_str(), cutTypeName(c.type),
+                  m.bodies[c.drivenBody].name.c_str(), c.rows);
+      continue;
+    }
+    std::printf("  %-18s %-10s %s - %s (%d equation%s)\n", c.name.c_str(), cutTypeName(c.type),
+                c.bodyA < 0 ? "ground" : m.bodies[c.bodyA].name.c_str(),
+                c.bodyB < 0 ? "ground" : m.bodies[c.bodyB].name.c_str(), c.rows, c.rows > 1 ? "s" : "");
+  }
+  std::printf("\nspring-dampers (%zu):\n", m.springs.size());
+  for (const mb::SpringDamper& s : m.springs)
+    std::printf("  %-18s %s - %s\n", s.name.c_str(), m.bodies[s.bodyA].name.c_str(), m.bodies[s.bodyB].name.c_str());
+  const int spin = v.layout.spinCoordinates;
+  const int coords = m.nv - spin, cuts = v.layout.cutJointEquations;
+  std::printf("\nrelative coordinates: %d (+%d wheel spin)\n", coords, spin);
+  std::printf("cut-joint constraint equations: %d (+%d driving constraint: rack travel)\n", cuts, m.nc - cuts);
+  std::printf("degrees of freedom: %d (+%d wheel spin); with the rack prescribed: %d\n", coords - cuts, spin,
+              coords - cuts - (m.nc - cuts));
+  std::printf("total mass: %.3f kg\n", m.totalMass());
+  return 0;
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app, CommandList& commands) {
+  CLI::App* cmd = app.add_subcommand("info", "Print the bodies, joints, cut joints and coordinate/constraint/DOF counts of a vehicle file");
+  auto path = std::make_shared<std::string>();
+  cmd->add_option("vehicle", *path, "Vehicle file (assets/vehicles/*.toml)")->required()->check(CLI::ExistingFile);
+  commands.push_back({cmd, [path] { return reportErrors([&] { return runInfo(*path); }); }});
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,23 @@
+// `bdfcar input`: list input devices and show live values for calibration.
+#include "input/monitor.h"
+
+#include "commands.h"
+
+namespace bdfcar::app {
+
+void addInputCommand(CLI::App& app, CommandList& commands) {
+  CLI::App* cmd = app.add_subcommand(
+      "input", "List wheels, game controllers and joysticks and show live axis / button values for calibration");
+  auto options = std::make_shared<input::MonitorOptions>();
+  cmd->add_option("--seconds", options->seconds, "Show live values this long, then exit (0: until Ctrl-C)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--interval", options->printInterval, "Seconds between printed lines")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--list", options->listOnly, "List the devices and their mapping files, then exit");
+  cmd->add_option("--mappings", options->mappingDir, "Folder of mapping files (*.toml)")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--device", options->deviceFilter, "Only devices whose name contains this text");
+  commands.push_back({cmd, [options] { return input::runInputMonitor(*options); }});
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,35 @@
+#include "scenario_overrides.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace bdfcar::app {
+
+void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
+  cmd.add_option("--step", ov.step, "Integration step, s")->check(CLI::Range(1e-6, 0.1));
+  cmd.add_option("--integrator", ov.integrator, "bdf, rk4 or euler")->check(CLI::IsMember({"bdf", "rk4", "euler"}));
+  cmd.add_option("--order", ov.order, "BDF order")->check(CLI::Range(1, 5));
+  cmd.add_option("--newton", ov.newton, "Newton iterations per step (0 = iterate to tolerance)")->check(CLI::Range(0, 50));
+  cmd.add_option("--jacobian-every", ov.jacobianEvery, "Jacobian every N steps (0 = first step only)")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
+  cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
+  cmd.add_option("--settle", ov.settle, "Settling time before the manoeuvre, s")->check(CLI::Range(0.0, 1e4));
+}
+
+void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
+  auto& it = spec.integrator;
+  if (ov.step) it.step = *ov.step;
+  if (ov.integrator)
+    it.method = *ov.integrator == "bdf" ? scenario::IntegratorMethod::Bdf
+                : *ov.integrator == "rk4" ? scenario::IntegratorMethod::Rk4
+                                          : scenario::IntegratorMethod::SemiImplicitEuler;
+  if (ov.order) it.order = *ov.order;
+  if (ov.newton) it.newtonIterations = *ov.newton;
+  if (ov.jacobianEvery) it.jacobianEvery = *ov.jacobianEvery;
+  if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
+  if (ov.duration) spec.duration = *ov.duration;
+  if (ov.settle) spec.settleTime = *ov.settle;
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,60 @@
+// Scripted driver inputs as functions of manoeuvre time with exact first and
+// second derivatives (the rack driver needs them at the velocity and
+// acceleration constraint levels).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+namespace bdfcar::scenario {
+
+struct SignalValue {
+  double value = 0, rate = 0, accel = 0;
+};
+
+class Signal {
+ public:
+  virtual ~Signal() = default;
+  virtual SignalValue at(double t) const = 0;
+};
+
+// 0 before `start`, linear to `level` over `rise` seconds, then held (the J-turn).
+class RampSignal final : public Signal {
+ public:
+  RampSignal(double start, double rise, double level) : start_(start), rise_(rise), level_(level) {}
+  SignalValue at(double t) const override;
+
+ private:
+  double start_, rise_, level_;
+};
+
+// amplitude * sin(2 pi (t - start) / period) for one period from `start`, else 0 (the lane change).
+class SinePeriodSignal final : public Signal {
+ public:
+  SinePeriodSignal(double start, double period, double amplitude) : start_(start), period_(period), amplitude_(amplitude) {}
+  SignalValue at(double t) const override;
+
+ private:
+  double start_, period_, amplitude_;
+};
+
+// Piecewise linear through (t_i, value_i), held before the first and after the last point.
+class TableSignal final : public Signal {
+ public:
+  TableSignal(std::vector<double> t, std::vector<double> v) : t_(std::move(t)), v_(std::move(v)) {}
+  SignalValue at(double t) const override;
+
+ private:
+  std::vector<double> t_, v_;
+};
+
+class ConstantSignal final : public Signal {
+ public:
+  explicit ConstantSignal(double v = 0) : v_(v) {}
+  SignalValue at(double) const override { return {v_, 0, 0}; }
+
+ private:
+  double v_;
+};
+
+}  // namespace bdfcar::scenario

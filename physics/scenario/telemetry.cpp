@@ -1,0 +1,55 @@
+#include "scenario/telemetry.h"
+
+#include <stdexcept>
+
+#include "config/units.h"
+
+namespace bdfcar::scenario {
+
+const char* TelemetryWriter::header() {
+  return "time_s,x_m,y_m,z_m,roll_rad,pitch_rad,yaw_rad,vx_mps,yawrate_radps,ay_mps2,dz_com_m,rack_m,"
+         "Fz_FL_N,Fz_FR_N,Fz_RL_N,Fz_RR_N,steer_in,pinion_deg,rack_cmd_m,ay_horiz_mps2,vy_mps,Tdrive_Nm,"
+         "steer_FL_deg,steer_FR_deg,alpha_FL_rad,alpha_FR_rad,alpha_RL_rad,alpha_RR_rad,"
+         "Fy_FL_N,Fy_FR_N,Fy_RL_N,Fy_RR_N,kappa_RL,kappa_RR,"
+         "ax_mps2,speed_mps,throttle_in,brake_in,kappa_FL,kappa_FR,Fx_FL_N,Fx_FR_N,Fx_RL_N,Fx_RR_N,"
+         "spin_FL_radps,spin_FR_radps,spin_RL_radps,spin_RR_radps,rack_force_N,newton_iterations";
+}
+
+TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v) : v_(v) {
+  f_ = std::fopen(path.c_str(), "w");
+  if (!f_) throw std::runtime_error(path + ": cannot open the telemetry file for writing");
+  std::fprintf(f_, "%s\n", header());
+}
+
+TelemetryWriter::~TelemetryWriter() {
+  if (f_) std::fclose(f_);
+}
+
+void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInputs& in) {
+  if (first_) {
+    z0_ = s.com.z();
+    rack0_ = s.rack;
+    first_ = false;
+  }
+  // Tdrive_Nm: the torque on a driven wheel (the reference applies it to each rear wheel).
+  double drive = 0;
+  for (int w = 0; w < 4; ++w)
+    if (v_.layout.wheels[w].spec->driven) drive = s.driveTorque[w];
+  const auto& st = v_.spec.steering;
+  const double pinionDeg = config::radToDeg(st.steeringWheelFull * in.steer);
+  std::fprintf(f_,
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%d\n",
+               s.t, s.com.x(), s.com.y(), s.com.z(), s.roll, s.pitch, s.yaw, s.vx, s.yawRate, s.ay, s.com.z() - z0_,
+               s.rack - rack0_, s.Fz[0], s.Fz[1], s.Fz[2], s.Fz[3], in.steer, pinionDeg, st.rackTravelFull * in.steer,
+               s.ayHorizontal, s.vy, drive, config::radToDeg(s.steerAngle[0]), config::radToDeg(s.steerAngle[1]),
+               s.alpha[0], s.alpha[1], s.alpha[2], s.alpha[3], s.Fy[0], s.Fy[1], s.Fy[2], s.Fy[3], s.kappa[2],
+               s.kappa[3], s.ax, s.speed, in.throttle, in.brake, s.kappa[0], s.kappa[1], s.Fx[0], s.Fx[1], s.Fx[2],
+               s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce,
+               in.newtonIterations);
+}
+
+}  // namespace bdfcar::scenario

@@ -1,0 +1,139 @@
+#include "tyre/fiala.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace bdfcar::tyre {
+
+namespace {
+
+double sgn(double x) { return (x > 0) - (x < 0); }
+
+// Chrono's ChFunctionSineStep from (x0, 0) to (x1, 1).
+double sineStep(double x, double x0, double x1) {
+  if (x <= x0) return 0.0;
+  if (x >= x1) return 1.0;
+  const double xi = (x - x0) / (x1 - x0);
+  return xi - std::sin(2 * std::numbers::pi * xi) / (2 * std::numbers::pi);
+}
+
+}  // namespace
+
+PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu) {
+  PatchForces out;
+  if (!(Fz > 0)) return out;
+  const double tanA = std::tan(alpha);
+  const double S = std::min(1.0, std::sqrt(kappa * kappa + tanA * tanA));
+  double U = p.uMax - (p.uMax - p.uMin) * S;
+  // Critical slips use U before friction scaling (as the reference codes it).
+  const double kappaC = std::abs(U * Fz / (2.0 * p.slipStiffness));
+  const double alphaC = std::atan(3.0 * U * Fz / p.corneringStiffness);
+  U *= std::clamp(mu, 0.1, 1.0) / p.referenceFriction;
+  const double UFz = U * Fz;
+  if (std::abs(kappa) < kappaC)
+    out.Fx = p.slipStiffness * kappa;
+  else
+    out.Fx = sgn(kappa) * (UFz - std::abs(UFz * UFz / (4.0 * kappa * p.slipStiffness)));
+  if (std::abs(alpha) <= alphaC) {
+    const double H = 1.0 - p.corneringStiffness * std::abs(tanA) / (3.0 * UFz);
+    const double H3 = H * H * H;
+    out.Fy = -UFz * (1.0 - H3) * sgn(alpha);
+    out.Mz = UFz * p.width * (1.0 - H) * H3 * sgn(alpha);
+  } else {
+    out.Fy = -UFz * sgn(alpha);
+    out.Mz = 0.0;
+  }
+  return out;
+}
+
+double highSpeedWeight(const FialaParams& p, double absVx) {
+  if (absVx <= p.lowSpeedBlend0) return 0.0;
+  if (absVx >= p.lowSpeedBlend1) return 1.0;
+  const double s = (absVx - p.lowSpeedBlend0) / (p.lowSpeedBlend1 - p.lowSpeedBlend0);
+  return s * s * (3.0 - 2.0 * s);
+}
+
+TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prev,
+                               double h) const {
+  TyreOutput out;
+  out.slipState = prev;
+  if (!g.valid) {
+    out.slipState = SlipState{};
+    return out;
+  }
+  // Contact geometry (spec 7.1, with the local ground normal in place of e_z).
+  const Vec3& n = w.spinAxis;
+  const Vec3& ez = g.normal;
+  const Vec3 nxz = n.cross(ez);
+  const double heightOfCentre = (w.centre - g.point).dot(ez);
+  if (nxz.squaredNorm() < 1e-3 || heightOfCentre <= 0) {
+    out.slipState = SlipState{};
+    return out;
+  }
+  const Vec3 xc = nxz.normalized();  // wheel heading in the ground plane
+  const Vec3 d = n.cross(xc);         // down in the wheel plane
+  const double R0 = p_.unloadedRadius;
+  const Vec3 bottom = w.centre + R0 * d;
+  const double delta = (g.point - bottom).dot(ez);
+  if (delta <= 0) {
+    out.slipState = SlipState{};
+    return out;
+  }
+  const Vec3 yc = ez.cross(xc);
+  const Vec3& v = w.centreVelocity;
+  const double vx = v.dot(xc), vy = v.dot(yc), vz = v.dot(ez);
+  const double Fz = std::max(0.0, p_.verticalStiffness * delta - p_.verticalDamping * vz);
+
+  const double vsx = vx - w.spinRate * (R0 - delta);
+  const double vsy = vy;
+  const double absVx = std::abs(vx);
+  // Slips: exact above lowSpeedBlend1, transient below, blended in between.
+  const double beta = highSpeedWeight(p_, absVx);
+  double kappa, tanAlpha, alpha;
+  SlipState next = prev;
+  if (beta < 1.0) {
+    // Backward Euler over the step from the last accepted transient slips.
+    const double sx = p_.relaxationLengthX, sy = p_.relaxationLengthY;
+    const double lim = p_.maxTransientSlip;
+    next.kappa = std::clamp((prev.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -lim, lim);
+    next.tanAlpha = std::clamp((prev.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -lim, lim);
+    const double denom = std::max(absVx, p_.lowSpeedBlend0);
+    kappa = beta * (-vsx / denom) + (1.0 - beta) * next.kappa;
+    tanAlpha = beta * (vsy / denom) + (1.0 - beta) * next.tanAlpha;
+    alpha = std::atan(tanAlpha);
+  } else {
+    kappa = -vsx / absVx;
+    alpha = std::atan2(vsy, absVx);
+    // Keep the transient slips at their steady state for a smooth return to low speed.
+    next.kappa = std::clamp(kappa, -p_.maxTransientSlip, p_.maxTransientSlip);
+    next.tanAlpha = std::clamp(vsy / absVx, -p_.maxTransientSlip, p_.maxTransientSlip);
+  }
+  PatchForces f = fialaPatchForces(p_, kappa, alpha, Fz, g.friction);
+  if (beta < 1.0) {
+    f.Fx -= (1.0 - beta) * p_.lowSpeedDampingX * vsx;
+    f.Fy -= (1.0 - beta) * p_.lowSpeedDampingY * vsy;
+  }
+  const double My = -sineStep(absVx, 0.125, 0.5) * p_.rollingResistance * Fz * sgn(w.spinRate);
+
+  out.inContact = true;
+  out.deflection = delta;
+  out.contactPoint = w.centre + (R0 - delta) * d;
+  out.point = out.contactPoint + delta * ez;  // as the reference applies it
+  out.force = f.Fx * xc + f.Fy * yc + Fz * ez;
+  out.moment = My * yc + f.Mz * ez;
+  out.Fx = f.Fx;
+  out.Fy = f.Fy;
+  out.Fz = Fz;
+  out.My = My;
+  out.Mz = f.Mz;
+  out.kappa = kappa;
+  out.alpha = alpha;
+  out.vx = vx;
+  out.vsx = vsx;
+  out.vsy = vsy;
+  out.slipState = next;
+  return out;
+}
+
+}  // namespace bdfcar::tyre

@@ -1,0 +1,63 @@
+// A tyre model maps (wheel pose and velocities, local terrain plane) to a
+// force and a moment on the spindle. Models may own transient slip states,
+// advanced once per accepted step (declared here: SlipState). The first
+// model is Fiala (fiala.h); a Magic Formula can implement the same interface.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace bdfcar::tyre {
+
+using Vec3 = Eigen::Vector3d;
+
+// The ground under a wheel for one step: a plane from the terrain ray query.
+struct ContactPlane {
+  bool valid = false;
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  // unit, out of the ground
+  double friction = 0.8;        // terrain mu
+};
+
+// Wheel state in the world frame.
+struct WheelKinematics {
+  Vec3 centre = Vec3::Zero();          // wheel centre C (spindle origin)
+  Vec3 spinAxis = Vec3::UnitY();       // unit spin axis n (spindle y)
+  Vec3 centreVelocity = Vec3::Zero();  // velocity of C
+  double spinRate = 0.0;               // absolute angular velocity of the spindle about n (rolling forward > 0)
+};
+
+// Transient slips (tyre deflections over relaxation lengths), used at low
+// speed where the slip definitions are singular.
+struct SlipState {
+  double kappa = 0.0;     // longitudinal transient slip
+  double tanAlpha = 0.0;  // lateral transient slip (tan of the slip angle)
+};
+
+struct TyreOutput {
+  bool inContact = false;
+  Vec3 force = Vec3::Zero();        // world, applied at `point`
+  Vec3 point = Vec3::Zero();        // application point (world)
+  Vec3 moment = Vec3::Zero();       // world, a pure couple
+  // Contact-frame diagnostics (telemetry).
+  Vec3 contactPoint = Vec3::Zero();
+  double Fx = 0, Fy = 0, Fz = 0, My = 0, Mz = 0;
+  double kappa = 0, alpha = 0;      // slips used by the force law
+  double deflection = 0;            // vertical tyre deflection delta, m
+  double vx = 0, vsx = 0, vsy = 0;  // wheel-centre forward speed and slip velocities, m/s
+  SlipState slipState;              // transient slips at the end of this evaluation
+};
+
+class TyreModel {
+ public:
+  virtual ~TyreModel() = default;
+  // Forces for the current wheel state; `previous` are the transient slips at
+  // the last accepted step, h the time since then (the evaluation integrates
+  // them by backward Euler, so it is implicit in the current state).
+  virtual TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
+                              double h) const = 0;
+  virtual double unloadedRadius() const = 0;
+  virtual double width() const = 0;
+};
+
+}  // namespace bdfcar::tyre

@@ -1,0 +1,159 @@
+#include "vehicle/equilibrium.h"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+
+#include "integrator/dae_blocks.h"
+#include "multibody/kinematics.h"
+
+namespace bdfcar::vehicle {
+
+using integ::Mat;
+using integ::Vec;
+
+std::vector<int> heldCoordinates(const Vehicle& v) {
+  const mb::Body& ch = v.model.bodies[v.layout.chassis];
+  // Free joint velocity order: linear (body x, y, z), angular (roll, pitch, yaw).
+  std::vector<int> held = {ch.vIndex + 0, ch.vIndex + 1, ch.vIndex + 5, v.layout.rackV};
+  for (const WheelLayout& w : v.layout.wheels) held.push_back(w.spinV);
+  std::sort(held.begin(), held.end());
+  return held;
+}
+
+namespace {
+
+std::vector<int> complement(int n, const std::vector<int>& held) {
+  std::vector<int> free;
+  for (int i = 0; i < n; ++i)
+    if (!std::binary_search(held.begin(), held.end(), i)) free.push_back(i);
+  return free;
+}
+
+// Constraint rows that are not rheonomic drivers (those involve held coordinates only).
+std::vector<int> loopRows(const mb::Model& m) {
+  std::vector<int> rows;
+  for (const mb::CutJoint& c : m.cutJoints)
+    if (c.type != mb::CutJointType::Driver)
+      for (int r = 0; r < c.rows; ++r) rows.push_back(c.row + r);
+  return rows;
+}
+
+}  // namespace
+
+bool assemble(const Vehicle& v, integ::Dae& dae, double t, Vec& q, std::string& message) {
+  const integ::DaeSizes n = dae.sizes();
+  std::vector<int> held;
+  const mb::Body& ch = v.model.bodies[v.layout.chassis];
+  for (int i = 0; i < ch.nv; ++i) held.push_back(ch.vIndex + i);
+  held.push_back(v.layout.rackV);
+  std::sort(held.begin(), held.end());
+  const std::vector<int> free = complement(n.nv, held), rows = loopRows(v.model);
+  integ::Residual r;
+  r.resize(n);
+  Mat J(n.nc, n.nv);
+  Vec zv = Vec::Zero(n.nv), zc = Vec::Zero(n.nc), dq = Vec::Zero(n.nv), qn(n.nq);
+  integ::Message msg;
+  for (int it = 0; it < 30; ++it) {
+    dae.residual(t, q, zv, zv, zc, r, true, msg);
+    double worst = 0;
+    for (int i : rows) worst = std::max(worst, std::abs(r.phi(i)));
+    if (worst < 1e-12) return true;
+    dae.constraintJacobian(t, q, J);
+    Mat Jf(rows.size(), free.size());
+    Vec phi(rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+      phi(i) = r.phi(rows[i]);
+      for (size_t j = 0; j < free.size(); ++j) Jf(i, j) = J(rows[i], free[j]);
+    }
+    const Vec step = Jf.completeOrthogonalDecomposition().solve(-phi);  // minimum-norm correction
+    dq.setZero();
+    for (size_t j = 0; j < free.size(); ++j) dq(free[j]) = step(j);
+    dae.retract(q, dq, qn);
+    q = qn;
+  }
+  message = "assembly did not converge: the hardpoints cannot close the loops";
+  return false;
+}
+
+EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces, double t, Vec& q,
+                               Vec& lambda) {
+  EquilibriumReport rep;
+  const integ::DaeSizes n = dae.sizes();
+  const std::vector<int> free = complement(n.nv, heldCoordinates(v)), rows = loopRows(v.model);
+  const int nf = static_cast<int>(free.size()), nr = static_cast<int>(rows.size());
+  integ::Residual r;
+  r.resize(n);
+  integ::BlockWorkspace ws;
+  ws.resize(n);
+  integ::StateDerivatives dx;
+  dx.resize(n);
+  Mat J(n.nc, n.nv), A(nf + nr, nf + nr);
+  Vec zv = Vec::Zero(n.nv), b(nf + nr), dq = Vec::Zero(n.nv), qn(n.nq);
+  integ::Message msg;
+  long count = 0;
+  forces.reset(t);
+  const double weight = -v.model.totalMass() * v.model.gravity.z();
+  for (int it = 0; it < 60; ++it) {
+    dae.beginStep(t, q, zv);  // terrain under the wheels at this configuration
+    dae.residual(t, q, zv, zv, lambda, r, true, msg);
+    double fmax = 0, pmax = 0;
+    for (int i : free) fmax = std::max(fmax, std::abs(r.F(i)));
+    for (int i : rows) pmax = std::max(pmax, std::abs(r.phi(i)));
+    rep.iterations = it;
+    rep.forceResidual = fmax;
+    rep.constraintResidual = pmax;
+    if (fmax < 1e-7 * weight && pmax < 1e-12) {
+      rep.converged = true;
+      break;
+    }
+    integ::stateDerivativeBlocks(dae, t, q, zv, zv, lambda, dx, ws, count);
+    dae.constraintJacobian(t, q, J);
+    A.setZero();
+    for (int i = 0; i < nf; ++i) {
+      for (int j = 0; j < nf; ++j) A(i, j) = dx.Fq(free[i], free[j]);
+      for (int k = 0; k < nr; ++k) A(i, nf + k) = J(rows[k], free[i]);
+      b(i) = -r.F(free[i]);
+    }
+    for (int k = 0; k < nr; ++k) {
+      for (int j = 0; j < nf; ++j) A(nf + k, j) = J(rows[k], free[j]);
+      b(nf + k) = -r.phi(rows[k]);
+    }
+    const Vec sol = A.partialPivLu().solve(b);
+    if (!sol.allFinite()) {
+      rep.message = "static equilibrium: singular system (a coordinate without stiffness at rest?)";
+      return rep;
+    }
+    dq.setZero();
+    for (int j = 0; j < nf; ++j) dq(free[j]) = sol(j);
+    for (int k = 0; k < nr; ++k) lambda(rows[k]) += sol(nf + k);
+    // Limit the first steps: the tyres' contact switches on and off with large moves.
+    const double scale = std::min(1.0, 0.05 / std::max(1e-12, dq.lpNorm<Eigen::Infinity>()));
+    dae.retract(q, scale * dq, qn);
+    q = qn;
+  }
+  if (!rep.converged) rep.message = "static equilibrium did not converge";
+  // Driver multipliers balance the held rack: F_rack + lambda = 0.
+  dae.residual(t, q, zv, zv, lambda, r, true, msg);
+  for (const mb::CutJoint& c : v.model.cutJoints)
+    if (c.type == mb::CutJointType::Driver) lambda(c.row) -= r.F(v.model.bodies[c.drivenBody].vIndex);
+
+  // Report.
+  dae.evaluateKinematics(t, q, zv);
+  const mb::Data& d = dae.data();
+  const int ch = v.layout.chassis;
+  const Eigen::Matrix3d& R = d.R[ch];
+  rep.chassisHeight = d.p[ch].z();
+  rep.comHeight = (d.p[ch] + R * v.model.bodies[ch].com).z();
+  rep.roll = std::atan2(R(2, 1), R(2, 2));
+  rep.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
+  for (int w = 0; w < 4; ++w) {
+    rep.wheelLoads[w] = forces.wheels()[w].out.Fz;
+    rep.totalLoad += rep.wheelLoads[w];
+  }
+  rep.weight = weight;
+  return rep;
+}
+
+}  // namespace bdfcar::vehicle

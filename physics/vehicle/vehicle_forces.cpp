@@ -1,0 +1,143 @@
+#include "vehicle/vehicle_forces.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bdfcar::vehicle {
+
+VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& terrain,
+                             const TerrainContactOptions& options)
+    : vehicle_(vehicle),
+      terrain_(terrain),
+      options_(options),
+      tyres_{tyre::FialaTyre(vehicle.layout.wheels[0].spec->tyre), tyre::FialaTyre(vehicle.layout.wheels[1].spec->tyre),
+             tyre::FialaTyre(vehicle.layout.wheels[2].spec->tyre), tyre::FialaTyre(vehicle.layout.wheels[3].spec->tyre)} {}
+
+void VehicleForces::reset(double t) {
+  for (WheelContact& c : wheels_) {
+    c.slip = tyre::SlipState{};
+    c.brakeDeflection = 0;
+  }
+  lastAccepted_ = t;
+  stepTime_ = t;
+}
+
+tyre::WheelKinematics VehicleForces::wheelKinematics(const mb::Data& d, int w) const {
+  const int b = vehicle_.layout.wheels[w].spindle;
+  tyre::WheelKinematics k;
+  k.centre = d.p[b];
+  k.spinAxis = d.R[b].col(1);
+  k.centreVelocity = d.R[b] * d.vel[b].head<3>();
+  k.spinRate = d.vel[b].tail<3>()(1);  // body-frame angular velocity about the spindle y axis
+  return k;
+}
+
+double VehicleForces::relativeSpin(const mb::Data& d, int w) const {
+  // Angular velocity of the spindle relative to its carrier, about the spindle's y (spin) axis.
+  const WheelLayout& wl = vehicle_.layout.wheels[w];
+  const Eigen::Vector3d rel = d.vel[wl.spindle].tail<3>() - d.Xup[wl.spindle].E * d.vel[wl.carrier].tail<3>();
+  return rel.y();
+}
+
+tyre::ContactPlane VehicleForces::queryGround(const tyre::WheelKinematics& w, double R0) const {
+  tyre::ContactPlane plane;
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const double reach = 2.0 * R0 + 0.5;
+  if (options_.raysPerWheel <= 1) {
+    const terrain::Hit h = terrain_.castRay(w.centre + R0 * up, -up, reach);
+    if (!h.hit) return plane;
+    plane.valid = true;
+    plane.point = h.point;
+    plane.normal = h.normal;
+    plane.friction = h.friction;
+    return plane;
+  }
+  // Envelope: rays along the wheel heading; the ground point deepest inside
+  // the wheel circle defines the plane, with its normal pointing from that
+  // point to the wheel centre (a curb edge pushes the wheel up and back).
+  Eigen::Vector3d heading = w.spinAxis.cross(up);
+  if (heading.squaredNorm() < 1e-6) heading = Eigen::Vector3d::UnitX();
+  heading.normalize();
+  double best = -1e9;
+  for (int i = 0; i < options_.raysPerWheel; ++i) {
+    const double s = -1.0 + 2.0 * i / (options_.raysPerWheel - 1);
+    const Eigen::Vector3d from = w.centre + s * options_.footprintHalfLength * R0 * heading + R0 * up;
+    const terrain::Hit h = terrain_.castRay(from, -up, reach);
+    if (!h.hit) continue;
+    Eigen::Vector3d r = w.centre - h.point;
+    r -= r.dot(w.spinAxis) * w.spinAxis;  // in the wheel plane
+    const double penetration = R0 - r.norm();
+    // Prefer the central ray on equal footing (flat ground).
+    const double score = penetration - 1e-9 * std::abs(s);
+    if (score > best) {
+      best = score;
+      plane.valid = true;
+      plane.point = h.point;
+      plane.friction = h.friction;
+      plane.normal = (std::abs(s) < 1e-12 || r.norm() < 1e-9) ? h.normal : Eigen::Vector3d(r.normalized());
+      if (plane.normal.dot(h.normal) < 0.2) plane.normal = h.normal;
+    }
+  }
+  return plane;
+}
+
+void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double t) {
+  stepTime_ = t;
+  for (int w = 0; w < 4; ++w)
+    wheels_[w].plane = queryGround(wheelKinematics(d, w), tyres_[w].unloadedRadius());
+}
+
+double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) const {
+  if (c.brakeCapacity <= 0) return 0.0;
+  const double t = kBrakeStiffness * (c.brakeDeflection + h * spin) + kBrakeDamping * spin;
+  return -std::clamp(t, -c.brakeCapacity, c.brakeCapacity);
+}
+
+void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
+  const double h = std::max(0.0, t - lastAccepted_);
+  for (int w = 0; w < 4; ++w) {
+    WheelContact& c = wheels_[w];
+    const WheelLayout& wl = vehicle_.layout.wheels[w];
+    const tyre::WheelKinematics k = wheelKinematics(d, w);
+    c.spinRate = k.spinRate;
+    c.out = tyres_[w].evaluate(k, c.plane, c.slip, h);
+    if (c.out.inContact) mb::addWorldWrench(d, wl.spindle, c.out.point, c.out.force, c.out.moment);
+    // Brakes react on the carrier (caliper on the upright): a joint torque.
+    d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, relativeSpin(d, w), h);
+    if (c.driveTorque != 0.0) {
+      const Eigen::Vector3d torque = c.driveTorque * k.spinAxis;
+      switch (vehicle_.spec.driveReaction) {
+        case DriveReaction::Carrier: d.jointForce(wl.spinV) += wl.spinSign * c.driveTorque; break;
+        case DriveReaction::Chassis:
+          mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque);
+          mb::addWorldWrench(d, vehicle_.layout.chassis, k.centre, Eigen::Vector3d::Zero(), -torque);
+          break;
+        case DriveReaction::None: mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque); break;
+      }
+    }
+  }
+  if (vehicle_.spec.dragArea > 0) {
+    const int ch = vehicle_.layout.chassis;
+    const Eigen::Vector3d v = mb::pointVelocity(d, ch, vehicle_.model.bodies[ch].com);
+    mb::addWorldWrench(d, ch, mb::pointPosition(d, ch, vehicle_.model.bodies[ch].com),
+                       -vehicle_.spec.dragArea * v.norm() * v);
+  }
+}
+
+void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t) {
+  const double h = std::max(0.0, t - lastAccepted_);
+  for (int w = 0; w < 4; ++w) {
+    WheelContact& c = wheels_[w];
+    const tyre::WheelKinematics k = wheelKinematics(d, w);
+    c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h).slipState;
+    if (c.brakeCapacity > 0) {
+      const double limit = c.brakeCapacity / kBrakeStiffness;
+      c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin(d, w), -limit, limit);
+    } else {
+      c.brakeDeflection = 0;
+    }
+  }
+  lastAccepted_ = t;
+}
+
+}  // namespace bdfcar::vehicle

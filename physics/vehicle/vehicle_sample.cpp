@@ -1,0 +1,95 @@
+#include "vehicle/vehicle_sample.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/kinematics.h"
+
+namespace bdfcar::vehicle {
+
+VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces,
+                            const integ::SolutionPoint& s) {
+  const mb::Model& m = v.model;
+  mb::Data& d = dae.data();
+  mb::sampleDrivers(m, d, s.t);
+  mb::updatePositions(m, s.q, d);
+  mb::updateVelocities(m, s.q, s.v, d);
+  mb::updateAccelerations(m, s.a, d);
+  mb::clearForces(m, d);
+  d.jointForce.setZero();
+  forces.apply(m, d, s.t);  // tyre outputs at this state (transient slips as accepted)
+
+  VehicleSample out;
+  out.t = s.t;
+  const int ch = v.layout.chassis;
+  const Mat3& R = d.R[ch];
+  const Vec3 c = m.bodies[ch].com;
+  out.com = mb::pointPosition(d, ch, c);
+  out.roll = std::atan2(R(2, 1), R(2, 2));
+  out.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
+  out.yaw = std::atan2(R(1, 0), R(0, 0));
+  const Vec3 vel = mb::pointVelocity(d, ch, c), acc = mb::pointAcceleration(d, ch, c);
+  const Vec3 vb = R.transpose() * vel, ab = R.transpose() * acc;
+  out.vx = vb.x();
+  out.vy = vb.y();
+  out.speed = vel.norm();
+  out.ax = ab.x();
+  out.ay = ab.y();
+  out.yawRate = d.vel[ch].tail<3>().z();
+  // Ground-plane component normal to the heading.
+  Vec3 heading(R(0, 0), R(1, 0), 0.0);
+  if (heading.norm() > 1e-9) {
+    heading.normalize();
+    out.ayHorizontal = acc.dot(Vec3(-heading.y(), heading.x(), 0.0));
+  }
+  out.rack = v.layout.rackAxisSign * s.q(v.layout.rackQ);
+  for (int w = 0; w < 4; ++w) {
+    const WheelContact& wc = forces.wheels()[w];
+    out.Fz[w] = wc.out.Fz;
+    out.Fx[w] = wc.out.Fx;
+    out.Fy[w] = wc.out.Fy;
+    out.alpha[w] = wc.out.alpha;
+    out.kappa[w] = wc.out.kappa;
+    out.inContact[w] = wc.out.inContact;
+    out.spinRate[w] = wc.spinRate;
+    out.driveTorque[w] = wc.driveTorque;
+    // Road-wheel steer: heading of the spin axis relative to the chassis, + = left.
+    const Vec3 n = R.transpose() * d.R[v.layout.wheels[w].spindle].col(1);
+    out.steerAngle[w] = std::atan2(-n.x(), n.y());
+  }
+  for (const mb::CutJoint& cj : m.cutJoints)
+    if (cj.type == mb::CutJointType::Driver) out.rackForce = v.layout.rackAxisSign * s.lambda(cj.row);
+  return out;
+}
+
+VehicleView viewVehicle(const Vehicle& v, const mb::MultibodyDae& dae, const VehicleForces& forces, double t) {
+  const mb::Data& d = dae.data();
+  VehicleView view;
+  view.time = t;
+  view.chassis.position = d.p[v.layout.chassis];
+  view.chassis.rotation = Eigen::Quaterniond(d.R[v.layout.chassis]);
+  for (int w = 0; w < 4; ++w) {
+    const int b = v.layout.wheels[w].spindle;
+    WheelView& wv = view.wheels[w];
+    wv.pose.position = d.p[b];
+    wv.pose.rotation = Eigen::Quaterniond(d.R[b]);
+    wv.radius = v.layout.wheels[w].spec->tyre.unloadedRadius;
+    wv.width = v.layout.wheels[w].spec->tyre.width;
+    wv.contactPoint = forces.wheels()[w].out.contactPoint;
+    wv.normalForce = forces.wheels()[w].out.Fz;
+    wv.inContact = forces.wheels()[w].out.inContact;
+  }
+  for (const LinkDrawing& l : v.layout.links) {
+    LinkSegment s;
+    s.a = mb::pointPosition(d, l.bodyA, l.pointA);
+    s.b = mb::pointPosition(d, l.bodyB, l.pointB);
+    s.kind = l.kind;
+    s.radius = l.kind == LinkKind::Spring ? 0.035 : 0.015;
+    view.links.push_back(s);
+  }
+  return view;
+}
+
+}  // namespace bdfcar::vehicle
