@@ -38,4 +38,9 @@ struct TerrainData {
   RoadMarkings road;
 };
 
+// Throws std::invalid_argument (naming sourceFile) unless the data describe a
+// usable surface: finite numbers, a non-zero plane normal, triangle indices in
+// range, a heightfield of at least 2 x 2 points with positive spacing.
+void checkTerrainData(const TerrainData& data);
+
 }  // namespace bdfcar::terrain

@@ -16,7 +16,20 @@ struct TriangleMesh {
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from above
 };
 
-// planeHalfSize: half the side of the square drawn for an infinite plane, m.
-TriangleMesh triangulate(const TerrainData& data, double planeHalfSize = 2000.0);
+// Vertices with per-vertex normals for drawing: meshes keep their triangles
+// (turned to face up), heightfields become their grid triangles (split as
+// Bullet splits them), a plane becomes a square of half side planeHalfSize (m)
+// centred on its point. Vertices are split where faces meet at more than
+// creaseAngle (rad) so curbs and lips stay sharp while slopes stay smooth.
+TriangleMesh triangulate(const TerrainData& data, double planeHalfSize = 2000.0, double creaseAngle = 0.5);
+
+// Triangles of a cols x rows grid of vertices (index row * cols + col), each
+// cell split along its (col, row)-(col + 1, row + 1) diagonal, the split
+// Bullet's heightfield uses with flipQuadEdges; counter-clockwise seen from
+// above; zero-area triangles (cells collapsed by doubled grid lines) dropped.
+std::vector<std::array<int, 3>> gridTriangles(int cols, int rows, const std::vector<Eigen::Vector3d>& vertices);
+
+// The same surface as a heightfield, as mesh data (kind = Mesh).
+TerrainData heightfieldAsMesh(const TerrainData& heightfield);
 
 }  // namespace bdfcar::terrain

@@ -1,0 +1,55 @@
+// What a person commands in one tick, as plain data: the output of
+// InputSystem::poll(). No SDL types; the app maps it onto the physics'
+// DriverInput (input/ depends on nothing of ours).
+#pragma once
+
+#include <string_view>
+
+namespace bdfcar::input {
+
+// Which kind of device a mapping file describes and a connected device is.
+enum class DeviceKind { Keyboard, Wheel, GameController, Joystick };
+
+// The analog controls a mapping can bind to an axis (or, for the keyboard, ramp).
+enum class Axis { Steering, Throttle, Brake, Clutch };
+inline constexpr int kAxisCount = 4;
+
+// Edge-triggered commands: true in the one tick in which the button went down.
+enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, Record, Quit };
+inline constexpr int kActionCount = 8;
+
+struct Controls {
+  // Analog, from the active device (the highest-ranked connected one, else the keyboard).
+  double steering = 0.0;  // [-1, 1], + = left
+  double throttle = 0.0;  // [0, 1]
+  double brake = 0.0;     // [0, 1]
+  double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); 0 unless hasClutch
+  bool hasClutch = false; // the active device's mapping binds a clutch
+
+  // Edge-triggered, from every connected device and the keyboard together.
+  bool gearUp = false;
+  bool gearDown = false;
+  bool reset = false;
+  bool pause = false;
+  bool singleStep = false;
+  bool camera = false;
+  bool record = false;
+  bool quit = false;
+
+  DeviceKind source = DeviceKind::Keyboard;  // the device the analog values came from
+};
+
+// The flag of `action` inside `controls` (one switch instead of eight ifs in callers).
+bool& actionFlag(Controls& controls, Action action);
+bool actionFlag(const Controls& controls, Action action);
+
+// The name used in mapping files: "steering", "throttle", "brake", "clutch".
+std::string_view axisName(Axis axis);
+
+// The name used in mapping files: "gear_up", "reset", "single_step", ...
+std::string_view actionName(Action action);
+
+// The name used in mapping files' `type`: "keyboard", "wheel", "gamecontroller", "joystick".
+std::string_view deviceKindName(DeviceKind kind);
+
+}  // namespace bdfcar::input

@@ -1,0 +1,18 @@
+// The two Bullet terrains, built from data that checkTerrainData accepted
+// (internal: makeTerrain is the public way in).
+#pragma once
+
+#include <memory>
+
+#include "terrain/terrain.h"
+#include "terrain/terrain_data.h"
+
+namespace bdfcar::terrain {
+
+// A bounding-volume tree over data.vertices / data.triangles.
+std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data);
+
+// Bullet's heightfield over data.heights.
+std::unique_ptr<Terrain> makeHeightfieldTerrain(const TerrainData& data);
+
+}  // namespace bdfcar::terrain

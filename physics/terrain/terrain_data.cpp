@@ -1,0 +1,54 @@
+// Consistency of TerrainData, checked once before anything builds on it.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "terrain/terrain_data.h"
+
+namespace bdfcar::terrain {
+
+namespace {
+
+[[noreturn]] void reject(const TerrainData& data, const std::string& problem) {
+  const std::string where = data.sourceFile.empty() ? std::string("terrain data") : data.sourceFile;
+  throw std::invalid_argument(where + ": " + problem);
+}
+
+void checkMesh(const TerrainData& data) {
+  if (data.vertices.empty() || data.triangles.empty()) reject(data, "mesh has no triangles");
+  for (const Eigen::Vector3d& v : data.vertices)
+    if (!v.allFinite()) reject(data, "mesh vertex is not finite");
+  const int n = static_cast<int>(data.vertices.size());
+  for (const auto& t : data.triangles)
+    for (int i : t)
+      if (i < 0 || i >= n) reject(data, "triangle index " + std::to_string(i) + " out of range [0, " + std::to_string(n) + ")");
+}
+
+void checkHeightfield(const TerrainData& data) {
+  if (data.rows < 2 || data.cols < 2) reject(data, "heightfield needs at least 2 x 2 points");
+  if (data.heights.size() != static_cast<std::size_t>(data.rows) * static_cast<std::size_t>(data.cols))
+    reject(data, "heightfield has " + std::to_string(data.heights.size()) + " heights, expected rows * cols");
+  if (!(data.dx > 0 && data.dy > 0 && std::isfinite(data.dx) && std::isfinite(data.dy)))
+    reject(data, "heightfield spacing must be positive");
+  if (!std::isfinite(data.x0) || !std::isfinite(data.y0)) reject(data, "heightfield origin is not finite");
+  for (double h : data.heights)
+    if (!std::isfinite(h)) reject(data, "heightfield height is not finite");
+}
+
+}  // namespace
+
+// Throws unless the data of the declared kind are complete and finite.
+void checkTerrainData(const TerrainData& data) {
+  if (!(data.friction > 0) || !std::isfinite(data.friction)) reject(data, "friction must be positive");
+  switch (data.kind) {
+    case TerrainKind::Plane:
+      if (!data.planePoint.allFinite() || !data.planeNormal.allFinite() || data.planeNormal.norm() == 0.0)
+        reject(data, "plane needs a finite point and a non-zero normal");
+      return;
+    case TerrainKind::Mesh: return checkMesh(data);
+    case TerrainKind::Heightfield: return checkHeightfield(data);
+  }
+  reject(data, "unknown terrain kind");
+}
+
+}  // namespace bdfcar::terrain

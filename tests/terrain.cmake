@@ -1,0 +1,11 @@
+# Terrain tests (registered with ctest) and the ray benchmark (run by hand:
+# build-dir/tests/bench_terrain --benchmark_repetitions=5 --benchmark_report_aggregates_only=true).
+find_package(Threads REQUIRED)
+
+bdfcar_test(test_terrain test_terrain.cpp)
+target_link_libraries(test_terrain PRIVATE bdfcar_terrain_bullet bdfcar_terrain Threads::Threads)
+target_compile_definitions(test_terrain PRIVATE BDFCAR_ASSETS_DIR="${PROJECT_SOURCE_DIR}/assets")
+
+add_executable(bench_terrain bench/bench_terrain.cpp)
+target_link_libraries(bench_terrain PRIVATE bdfcar_terrain_bullet bdfcar_terrain benchmark::benchmark bdfcar_warnings)
+target_compile_definitions(bench_terrain PRIVATE BDFCAR_ASSETS_DIR="${PROJECT_SOURCE_DIR}/assets")
