@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "multibody/model.h"
 #include "vehicle/vehicle_builder.h"
+#include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_file.h"
 
 namespace bdfcar::app {
@@ -42,9 +43,15 @@ int runInfo(const std::string& path) {
                 c.bodyA < 0 ? "ground" : m.bodies[c.bodyA].name.c_str(),
                 c.bodyB < 0 ? "ground" : m.bodies[c.bodyB].name.c_str(), c.rows, c.rows > 1 ? "s" : "");
   }
-  std::printf("\nspring-dampers (%zu):\n", m.springs.size());
-  for (const mb::SpringDamper& s : m.springs)
-    std::printf("  %-18s %s - %s\n", s.name.c_str(), m.bodies[s.bodyA].name.c_str(), m.bodies[s.bodyB].name.c_str());
+  std::printf("\nspring-dampers (%zu), motion ratio dL/dz of the wheel centre at design:\n", m.springs.size());
+  const std::vector<vehicle::MotionRatio> ratios = vehicle::motionRatios(v);
+  static const char* kWheel[4] = {"FL", "FR", "RL", "RR"};
+  for (size_t k = 0; k < m.springs.size(); ++k) {
+    const mb::SpringDamper& s = m.springs[k];
+    std::printf("  %-18s %s - %s", s.name.c_str(), m.bodies[s.bodyA].name.c_str(), m.bodies[s.bodyB].name.c_str());
+    if (ratios[k].wheel >= 0) std::printf("  (%s: %+.5f)", kWheel[ratios[k].wheel], ratios[k].ratio);
+    std::printf("\n");
+  }
   const int spin = v.layout.spinCoordinates;
   const int coords = m.nv - spin, cuts = v.layout.cutJointEquations;
   std::printf("\nrelative coordinates: %d (+%d wheel spin)\n", coords, spin);

@@ -9,7 +9,7 @@ Data makeData(const Model& model) {
   d.Xup.resize(nb);
   d.R.assign(nb, Mat3::Identity());
   d.p.assign(nb, Vec3::Zero());
-  d.S = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, model.nv);
+  d.S = model.S;
   d.vel.assign(nb, Vec6::Zero());
   d.bias.assign(nb, Vec6::Zero());
   d.acc.assign(nb, Vec6::Zero());

@@ -42,7 +42,7 @@ void inverseDynamics(const Model& model, Data& d) {
   }
   for (int i = nb - 1; i >= 0; --i) {
     const Body& b = model.bodies[i];
-    d.tau.segment(b.vIndex, b.nv).noalias() = d.S.middleCols(b.vIndex, b.nv).transpose() * d.f[i];
+    for (int k = 0; k < b.nv; ++k) d.tau(b.vIndex + k) = d.S.col(b.vIndex + k).dot(d.f[i]);
     if (b.parent >= 0) d.f[b.parent] += d.Xup[i].applyTransposeForce(d.f[i]);
   }
 }

@@ -1,12 +1,14 @@
 #include "multibody/kinematics.h"
 
+#include <cmath>
+
 #include "multibody/joint.h"
 
 namespace bdfcar::mb {
 
 namespace {
 
-// Motion (lin; ang) given at the child joint frame origin in joint-frame axes,
+// Motion (lin; ang) at the child joint frame origin in joint-frame axes,
 // expressed at the body origin in body axes.
 Vec6 jointToBody(const Body& b, const Vec6& m) {
   const Mat3& Cc = b.inChild.axes;
@@ -17,36 +19,75 @@ Vec6 jointToBody(const Body& b, const Vec6& m) {
   return out;
 }
 
+// Rotation about the joint axis by angle t from the rest orientation.
+Mat3 rotateAboutAxis(const Body& b, double t) {
+  const double s = std::sin(t), c = std::cos(t);
+  return b.restRotation + s * b.rodrigues1 + (1.0 - c) * b.rodrigues2;
+}
+
+// Child axes in parent coordinates for a joint rotation Rj between the joint frames.
+Mat3 throughJointFrames(const Body& b, const Mat3& Rj) {
+  if (b.identityAxes) return Rj;
+  return b.inParent.axes * Rj * b.inChild.axes.transpose();
+}
+
+// Joint velocity (or acceleration) mapped to a body-coordinate motion: S qdot.
+Vec6 subspaceTimes(const Data& d, const Body& b, const Eigen::VectorXd& x) {
+  Vec6 out = d.S.col(b.vIndex) * x(b.vIndex);
+  for (int k = 1; k < b.nv; ++k) out += d.S.col(b.vIndex + k) * x(b.vIndex + k);
+  return out;
+}
+
 }  // namespace
 
 void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
-  SubspaceBlock Sj;
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const Body& b = model.bodies[i];
-    Mat3 Rj;
-    Vec3 dj;
-    jointRelativePose(b.joint, q.data() + b.qIndex, Rj, dj);
-    const Mat3 Rpc = b.inParent.axes * Rj * b.inChild.axes.transpose();
-    const Vec3 tpc = b.inParent.origin + b.inParent.axes * dj - Rpc * b.inChild.origin;
-    Transform& X = d.Xup[i];
-    X.E = Rpc.transpose();
-    X.r = tpc;
-    if (b.parent < 0) {
-      d.R[i] = Rpc;
-      d.p[i] = tpc;
-    } else {
-      d.R[i].noalias() = d.R[b.parent] * Rpc;
-      d.p[i] = d.p[b.parent] + d.R[b.parent] * tpc;
+    const double* qi = q.data() + b.qIndex;
+    Mat3 R = b.restRotation;
+    Vec3 t = b.inParent.origin;
+    switch (b.joint) {
+      case JointType::Revolute: R = rotateAboutAxis(b, qi[0]); break;
+      case JointType::Prismatic:
+        R = b.restRotation;
+        t += b.axisInParent * qi[0];
+        break;
+      case JointType::Cylindrical:
+        R = rotateAboutAxis(b, qi[0]);
+        t += b.axisInParent * qi[1];
+        break;
+      case JointType::Universal: {
+        R = throughJointFrames(b, rotX(qi[0]) * rotY(qi[1]));
+        SubspaceBlock Sj;
+        jointSubspace(b.joint, qi, Sj);
+        d.S.col(b.vIndex) = jointToBody(b, Sj.col(0));
+        break;
+      }
+      case JointType::Spherical: R = throughJointFrames(b, quatToMatrix(qi)); break;
+      case JointType::Free:
+        R = throughJointFrames(b, quatToMatrix(qi + 3));
+        t += b.inParent.axes * Vec3(qi[0], qi[1], qi[2]);
+        break;
     }
-    jointSubspace(b.joint, q.data() + b.qIndex, Sj);
-    for (int k = 0; k < b.nv; ++k) d.S.col(b.vIndex + k) = jointToBody(b, Sj.col(k));
+    t.noalias() -= R * b.inChild.origin;
+    Transform& X = d.Xup[i];
+    X.E = R.transpose();
+    X.r = t;
+    if (b.parent < 0) {
+      d.R[i] = R;
+      d.p[i] = t;
+    } else {
+      d.R[i].noalias() = d.R[b.parent] * R;
+      d.p[i] = d.p[b.parent];
+      d.p[i].noalias() += d.R[b.parent] * t;
+    }
   }
 }
 
 void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Data& d) {
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const Body& b = model.bodies[i];
-    const Vec6 vJ = d.S.middleCols(b.vIndex, b.nv) * v.segment(b.vIndex, b.nv);
+    const Vec6 vJ = subspaceTimes(d, b, v);
     if (b.parent < 0)
       d.vel[i] = vJ;
     else
@@ -60,7 +101,7 @@ void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen:
 void updateAccelerations(const Model& model, const Eigen::VectorXd& a, Data& d) {
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const Body& b = model.bodies[i];
-    Vec6 acc = d.S.middleCols(b.vIndex, b.nv) * a.segment(b.vIndex, b.nv) + d.bias[i];
+    Vec6 acc = subspaceTimes(d, b, a) + d.bias[i];
     if (b.parent >= 0) acc += d.Xup[i].applyMotion(d.acc[b.parent]);
     d.acc[i] = acc;
   }

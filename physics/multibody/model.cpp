@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "multibody/joint.h"
 #include "multibody/model_error.h"
 
 namespace bdfcar::mb {
@@ -165,6 +166,29 @@ void ModelBuilder::addSpring(SpringDamper s) {
   model_.springs.push_back(std::move(s));
 }
 
+namespace {
+
+// Motion (lin; ang) at the child joint frame origin in joint-frame axes,
+// expressed at the body origin in body axes.
+Vec6 jointMotionToBody(const Body& b, const Vec6& m) {
+  const Mat3& Cc = b.inChild.axes;
+  Vec6 out;
+  out.tail<3>() = Cc * m.tail<3>();
+  out.head<3>() = Cc * m.head<3>() + b.inChild.origin.cross(out.tail<3>());
+  return out;
+}
+
+void precomputeJoint(Body& b) {
+  b.restRotation = b.inParent.axes * b.inChild.axes.transpose();
+  b.axisInParent = b.inParent.axes.col(2);
+  const Mat3 A = skew(b.axisInParent);
+  b.rodrigues1 = A * b.restRotation;
+  b.rodrigues2 = A * A * b.restRotation;
+  b.identityAxes = b.inParent.axes.isIdentity(0.0) && b.inChild.axes.isIdentity(0.0);
+}
+
+}  // namespace
+
 Model ModelBuilder::build() {
   Model m = model_;
   int q = 0, v = 0;
@@ -175,6 +199,21 @@ Model ModelBuilder::build() {
     b.nv = jointNv(b.joint);
     q += b.nq;
     v += b.nv;
+    precomputeJoint(b);
+  }
+  m.S.setZero(6, v);
+  const Eigen::VectorXd q0 = [&] {
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(q);
+    for (const auto& b : m.bodies) {
+      if (b.joint == JointType::Spherical) z(b.qIndex) = 1.0;
+      if (b.joint == JointType::Free) z(b.qIndex + 3) = 1.0;
+    }
+    return z;
+  }();
+  SubspaceBlock Sj;
+  for (const auto& b : m.bodies) {
+    jointSubspace(b.joint, q0.data() + b.qIndex, Sj);
+    for (int k = 0; k < b.nv; ++k) m.S.col(b.vIndex + k) = jointMotionToBody(b, Sj.col(k));
   }
   int row = 0;
   for (auto& c : m.cutJoints) {

@@ -53,6 +53,14 @@ struct Body {
   int qIndex = 0, nq = 0;            // slice of the position vector
   int vIndex = 0, nv = 0;            // slice of the velocity vector
   Mat6 spatialInertia = Mat6::Zero();
+  // Constant joint data, so that a kinematic pass is a few products per body:
+  // child axes in parent coordinates at zero joint coordinates, and for
+  // joints about the joint z axis a (revolute, cylindrical) the Rodrigues
+  // terms [a]x R0 and [a]x^2 R0: R(theta) = R0 + sin(theta) P1 + (1 - cos(theta)) P2.
+  Mat3 restRotation = Mat3::Identity();
+  Mat3 rodrigues1 = Mat3::Zero(), rodrigues2 = Mat3::Zero();
+  Vec3 axisInParent = Vec3::UnitZ();
+  bool identityAxes = false;         // both joint frames have the body axes
 };
 
 // Cut-joint (closed-loop) constraint types.
@@ -108,6 +116,9 @@ struct Model {
   std::vector<SpringDamper> springs;
   Vec3 gravity = Vec3(0, 0, -9.81);
   int nq = 0, nv = 0, nc = 0;        // positions, velocities (= relative coordinates), constraint rows
+  // Joint motion subspaces in body coordinates (6 x nv); constant except for
+  // universal joints, whose columns updatePositions() rewrites in Data::S.
+  Eigen::Matrix<double, 6, Eigen::Dynamic> S;
   int nDrivers = 0;
 
   int bodyIndex(const std::string& name) const;  // -1 if absent

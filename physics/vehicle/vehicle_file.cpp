@@ -168,6 +168,19 @@ void Loader::readBodies() {
       Mat3 axes = s.M;
       if (auto ax = b.optionalTable("inertia_axes")) axes = inertiaAxes(*ax, s);
       body.inertia = inertiaTensor(b, axes);
+      // Point masses lumped into the body (e.g. halves of links modelled as massless distance constraints).
+      for (Table& pm : b.optionalTables("point_masses")) {
+        const double mi = pm.number("mass", Dimension::Mass);
+        pm.require(mi > 0, "mass", "a positive mass (kg)");
+        const Vec3 pi = point(pm, "at", s);
+        pm.finish();
+        const double M = body.mass + mi;
+        const Vec3 com = (body.mass * body.com + mi * pi) / M;
+        auto shift = [](double m, const Vec3& r) { return m * (r.squaredNorm() * Mat3::Identity() - r * r.transpose()); };
+        body.inertia += shift(body.mass, body.com - com) + shift(mi, pi - com);
+        body.mass = M;
+        body.com = com;
+      }
       Table j = b.table("joint");
       const std::string type = j.string("type");
       JointSpec& js = body.joint;

@@ -1,0 +1,23 @@
+// Suspension motion ratios at design: for each spring-damper, the rate of
+// change of its length per unit vertical travel of its wheel centre
+// (dL / dz, chassis held, rack held). Computed from the null space of the
+// constraint Jacobian, so it holds for any topology the data describes.
+// Used to make a spring moved to another body equivalent (k' = k (MR / MR')^2).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vehicle/vehicle_builder.h"
+
+namespace bdfcar::vehicle {
+
+struct MotionRatio {
+  std::string element;  // spring-damper name
+  int wheel = -1;       // 0..3 (FL FR RL RR), -1 if it does not move with one wheel
+  double ratio = 0;     // dL / dz_wheel
+};
+
+std::vector<MotionRatio> motionRatios(const Vehicle& v);
+
+}  // namespace bdfcar::vehicle
