@@ -314,8 +314,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
   p.a = a_;
   p.lambda = lam_;
   ++counters_.substeps;
-  dae_.acceptStep(tNew, p.q, p.v);
-  if (dae_.checkState(tNew, p.q, p.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
+  if (dae_.acceptStep(tNew, h, p.q, p.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
   return rep;
 }
 

@@ -61,9 +61,16 @@ class Dae {
   // (per-step work such as terrain queries belongs here).
   virtual void beginStep(double /*t*/, const Vec& /*q*/, const Vec& /*v*/) {}
 
-  // Once per accepted step, with the accepted state (advance states that a
-  // force law owns, e.g. tyre transient slips, backward Euler over the step).
-  virtual void acceptStep(double /*t*/, const Vec& /*q*/, const Vec& /*v*/) {}
+  // Once per accepted step of length h ending at t, with the accepted state:
+  // advance the states a force law owns (e.g. tyre transient slips, backward
+  // Euler over the step), prepare the next step, and check the state for
+  // divergence (non-Ok stops the run with msg). Called right after the last
+  // residual evaluation of the step, whose intermediate results (kinematics,
+  // constraint values) differ from the accepted state only by the last Newton
+  // correction: an implementation may use them where that is immaterial.
+  virtual EvalStatus acceptStep(double /*t*/, double /*h*/, const Vec& /*q*/, const Vec& /*v*/, Message& /*msg*/) {
+    return EvalStatus::Ok;
+  }
 
   // Residuals at (t, q, v, a, lambda). F always; the constraint levels only
   // when withConstraints (finite-difference columns need F alone).
@@ -73,11 +80,6 @@ class Dae {
   // Optional analytic blocks; return false to get finite differences.
   virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }
   virtual bool constraintJacobian(double /*t*/, const Vec& /*q*/, Mat& /*Phi_q*/) { return false; }
-
-  // Sanity check of an accepted step (divergence detection beyond Newton).
-  virtual EvalStatus checkState(double /*t*/, const Vec& /*q*/, const Vec& /*v*/, Message& /*msg*/) {
-    return EvalStatus::Ok;
-  }
 };
 
 }  // namespace bdfcar::integ

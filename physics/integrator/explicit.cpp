@@ -73,13 +73,12 @@ StepReport ExplicitIntegrator::step(double h) {
   cur_.t = t + h;
   cur_.lambda = lam_;
   ++counters_.steps;
-  dae_.acceptStep(cur_.t, cur_.q, cur_.v);
   if (!finiteState()) {
     rep.status = StepStatus::Diverged;
     rep.message.set("non-finite state at t = %.6g s", cur_.t);
     return rep;
   }
-  if (dae_.checkState(cur_.t, cur_.q, cur_.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
+  if (dae_.acceptStep(cur_.t, h, cur_.q, cur_.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
   return rep;
 }
 

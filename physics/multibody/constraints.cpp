@@ -116,8 +116,8 @@ void applyConstraintWrenches(const Model& model, const Eigen::VectorXd& lambda, 
       force = lambda(c.row) * dx / dx.norm();
     }
     // fext enters the residual with a minus sign; Phi_q^T lambda with a plus.
-    addWorldWrench(d, c.bodyA, xa, -force);
-    addWorldWrench(d, c.bodyB, xb, force);
+    addWorldForce(d, c.bodyA, xa, -force);
+    addWorldForce(d, c.bodyB, xb, force);
   }
 }
 

@@ -61,14 +61,50 @@ Data makeData(const Model& model);
 inline Mat3 bodyRotation(const Data& d, int body) { return body < 0 ? Mat3::Identity() : d.R[body]; }
 inline Vec3 bodyOrigin(const Data& d, int body) { return body < 0 ? Vec3::Zero() : d.p[body]; }
 
-// World position, velocity and (classical) acceleration of a point fixed in a body.
-Vec3 pointPosition(const Data& d, int body, const Vec3& local);
-Vec3 pointVelocity(const Data& d, int body, const Vec3& local);
-Vec3 pointAcceleration(const Data& d, int body, const Vec3& local);
-// World angular velocity of a body.
-Vec3 angularVelocity(const Data& d, int body);
+// World position of a point fixed in a body (inline: on every residual's path).
+inline Vec3 pointPosition(const Data& d, int body, const Vec3& s) {
+  if (body < 0) return s;
+  return d.p[body] + d.R[body] * s;
+}
 
-// Adds a world-frame force applied at a world point, and a world-frame torque, to a body.
-void addWorldWrench(Data& d, int body, const Vec3& point, const Vec3& force, const Vec3& torque = Vec3::Zero());
+// World velocity of a point fixed in a body.
+inline Vec3 pointVelocity(const Data& d, int body, const Vec3& s) {
+  if (body < 0) return Vec3::Zero();
+  const Vec6& v = d.vel[body];
+  return d.R[body] * (v.head<3>() + v.tail<3>().cross(s));
+}
+
+// World (classical) acceleration of a point fixed in a body.
+inline Vec3 pointAcceleration(const Data& d, int body, const Vec3& s) {
+  if (body < 0) return Vec3::Zero();
+  const Vec6& v = d.vel[body];
+  const Vec6& a = d.acc[body];
+  const Vec3 w = v.tail<3>();
+  const Vec3 vp = v.head<3>() + w.cross(s);
+  return d.R[body] * (a.head<3>() + a.tail<3>().cross(s) + w.cross(vp));
+}
+
+// World angular velocity of a body.
+inline Vec3 angularVelocity(const Data& d, int body) {
+  if (body < 0) return Vec3::Zero();
+  return d.R[body] * d.vel[body].tail<3>();
+}
+
+// Adds a world-frame force applied at a world point to a body.
+inline void addWorldForce(Data& d, int body, const Vec3& point, const Vec3& force) {
+  if (body < 0) return;
+  const Mat3& R = d.R[body];
+  const Vec3 fb = R.transpose() * force;
+  const Vec3 sb = R.transpose() * (point - d.p[body]);
+  d.fext[body].head<3>() += fb;
+  d.fext[body].tail<3>() += sb.cross(fb);
+}
+
+// Adds a world-frame force at a world point and a world-frame torque to a body.
+inline void addWorldWrench(Data& d, int body, const Vec3& point, const Vec3& force, const Vec3& torque) {
+  if (body < 0) return;
+  addWorldForce(d, body, point, force);
+  d.fext[body].tail<3>() += d.R[body].transpose() * torque;
+}
 
 }  // namespace bdfcar::mb

@@ -27,8 +27,8 @@ void applySprings(const Model& model, Data& d) {
     const double f = s.force(L, Ldot);
     d.springLength[k] = L;
     d.springForce[k] = f;
-    addWorldWrench(d, s.bodyA, xa, f * u);
-    addWorldWrench(d, s.bodyB, xb, -f * u);
+    addWorldForce(d, s.bodyA, xa, f * u);
+    addWorldForce(d, s.bodyB, xb, -f * u);
   }
 }
 

@@ -20,6 +20,20 @@ void storeQuat(const Quat& q, double* out) {
 
 Quat loadQuat(const double* wxyz) { return Quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]); }
 
+// Rotation vector of the relative rotation q0^-1 q (in q0's frame), |result| <= pi.
+Vec3 relativeRotation(const double* q0, const double* q) {
+  Quat r = loadQuat(q0).conjugate() * loadQuat(q);
+  if (r.w() < 0) r.coeffs() = -r.coeffs();
+  const Vec3 v = r.vec();
+  const double s = v.norm();
+  if (s < 5e-3) {
+    // 2 atan(x) / x with x = s / w by series (next term below 1e-20 here).
+    const double x2 = s * s / (r.w() * r.w());
+    return v * (2.0 / r.w() * (1.0 - x2 * (1.0 / 3.0 - x2 * (1.0 / 5.0 - x2 * (1.0 / 7.0 - x2 / 9.0)))));
+  }
+  return v * (2.0 * std::atan2(s, r.w()) / s);
+}
+
 }  // namespace
 
 void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj) {
@@ -136,16 +150,15 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
       out[1] = q[1] - base[1];
       break;
     case JointType::Spherical: {
-      const Vec3 th = logSO3(quatToMatrix(base).transpose() * quatToMatrix(q));
+      const Vec3 th = relativeRotation(base, q);
       out[0] = th.x();
       out[1] = th.y();
       out[2] = th.z();
       break;
     }
     case JointType::Free: {
-      const Mat3 R0 = quatToMatrix(base + 3);
-      const Vec3 dp = R0.transpose() * Vec3(q[0] - base[0], q[1] - base[1], q[2] - base[2]);
-      const Vec3 th = logSO3(R0.transpose() * quatToMatrix(q + 3));
+      const Vec3 dp = loadQuat(base + 3).conjugate() * Vec3(q[0] - base[0], q[1] - base[1], q[2] - base[2]);
+      const Vec3 th = relativeRotation(base + 3, q + 3);
       for (int i = 0; i < 3; ++i) {
         out[i] = dp(i);
         out[3 + i] = th(i);

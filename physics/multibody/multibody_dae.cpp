@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/kinematics.h"
@@ -40,19 +41,38 @@ void MultibodyDae::evaluateKinematics(double t, const integ::Vec& q, const integ
   applyForces(t);
 }
 
-void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec& v) {
-  if (providers_.empty()) return;
+void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
+  bool any = false;
+  for (ForceProvider* p : providers_) any |= p->needsBeginStep();
+  if (!any) return;
   updatePositions(model_, q, data_);
-  updateVelocities(model_, q, v, data_);
-  for (ForceProvider* p : providers_) p->beginStep(model_, data_, t);
+  for (ForceProvider* p : providers_)
+    if (p->needsBeginStep()) p->beginStep(model_, data_, t);
 }
 
-void MultibodyDae::acceptStep(double t, const integ::Vec& q, const integ::Vec& v) {
-  if (providers_.empty()) return;
-  sampleDrivers(model_, data_, t);
-  updatePositions(model_, q, data_);
-  updateVelocities(model_, q, v, data_);
-  for (ForceProvider* p : providers_) p->acceptStep(model_, data_, t);
+// Force-law states, the next step's preparation and the divergence checks
+// (finite, bounded velocities, constraints closed), from the kinematics of the
+// last residual evaluation: no extra kinematic pass on the step's path.
+integ::EvalStatus MultibodyDae::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
+                                           integ::Message& msg) {
+  if (!q.allFinite() || !v.allFinite()) {
+    msg.set("non-finite state at t = %.6g s", t);
+    return integ::EvalStatus::Fatal;
+  }
+  for (int i = 0; i < model_.nv; ++i)
+    if (std::abs(v(i)) > limits_.maxVelocity) {
+      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
+      return integ::EvalStatus::Fatal;
+    }
+  for (ForceProvider* p : providers_) p->acceptStep(model_, data_, t, h);
+  for (const CutJoint& c : model_.cutJoints)
+    for (int r = 0; r < c.rows; ++r)
+      if (!(std::abs(data_.phi(c.row + r)) <= limits_.maxConstraintViolation)) {
+        msg.set("constraint '%s' violated by %.3g (limit %.3g) at t = %.6g s", c.name.c_str(), data_.phi(c.row + r),
+                limits_.maxConstraintViolation, t);
+        return integ::EvalStatus::Fatal;
+      }
+  return integ::EvalStatus::Ok;
 }
 
 integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
@@ -90,30 +110,6 @@ bool MultibodyDae::constraintJacobian(double /*t*/, const integ::Vec& q, integ::
   updatePositions(model_, q, data_);
   mb::constraintJacobian(model_, data_, Phi_q);
   return true;
-}
-
-integ::EvalStatus MultibodyDae::checkState(double t, const integ::Vec& q, const integ::Vec& v,
-                                           integ::Message& msg) {
-  if (!q.allFinite() || !v.allFinite()) {
-    msg.set("non-finite state at t = %.6g s", t);
-    return integ::EvalStatus::Fatal;
-  }
-  for (int i = 0; i < model_.nv; ++i)
-    if (std::abs(v(i)) > limits_.maxVelocity) {
-      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
-      return integ::EvalStatus::Fatal;
-    }
-  sampleDrivers(model_, data_, t);
-  updatePositions(model_, q, data_);
-  constraintPositions(model_, q, data_);
-  for (const CutJoint& c : model_.cutJoints)
-    for (int r = 0; r < c.rows; ++r)
-      if (std::abs(data_.phi(c.row + r)) > limits_.maxConstraintViolation) {
-        msg.set("constraint '%s' violated by %.3g (limit %.3g) at t = %.6g s", c.name.c_str(), data_.phi(c.row + r),
-                limits_.maxConstraintViolation, t);
-        return integ::EvalStatus::Fatal;
-      }
-  return integ::EvalStatus::Ok;
 }
 
 }  // namespace bdfcar::mb

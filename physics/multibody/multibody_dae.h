@@ -15,13 +15,18 @@ namespace bdfcar::mb {
 class ForceProvider {
  public:
   virtual ~ForceProvider() = default;
-  // Once per step at the predicted state (positions and velocities in data are current).
+  // Before a step, at the predicted state (positions in data are current),
+  // when needsBeginStep(): the first step of a run, or always for providers
+  // that cannot prepare the step from the accepted state.
+  virtual bool needsBeginStep() const { return false; }
   virtual void beginStep(const Model& /*model*/, const Data& /*data*/, double /*t*/) {}
   // Adds wrenches to data.fext and joint forces to data.jointForce. Positions
   // and velocities in data are current.
   virtual void apply(const Model& model, Data& data, double t) = 0;
-  // Once per accepted step (positions and velocities in data are the accepted ones).
-  virtual void acceptStep(const Model& /*model*/, const Data& /*data*/, double /*t*/) {}
+  // Once per accepted step; positions and velocities in data are those of the
+  // last residual evaluation (the last Newton iterate: the accepted state up
+  // to the last correction). May prepare the next step, of length about h.
+  virtual void acceptStep(const Model& /*model*/, const Data& /*data*/, double /*t*/, double /*h*/) {}
 };
 
 struct StateLimits {
@@ -48,13 +53,12 @@ class MultibodyDae final : public integ::Dae {
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
   void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
   void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
-  void acceptStep(double t, const integ::Vec& q, const integ::Vec& v) override;
+  integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v, integ::Message& msg) override;
   integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
                              const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
                              integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
   bool constraintJacobian(double t, const integ::Vec& q, integ::Mat& Phi_q) override;
-  integ::EvalStatus checkState(double t, const integ::Vec& q, const integ::Vec& v, integ::Message& msg) override;
 
  private:
   void applyForces(double t);

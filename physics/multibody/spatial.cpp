@@ -34,8 +34,10 @@ Mat3 rightJacobianInverse(const Vec3& theta) {
   const double t2 = theta.squaredNorm();
   const Mat3 W = skew(theta);
   double c;  // Jr^-1 = I + W/2 + c W^2
-  if (t2 < 1e-8) {
-    c = 1.0 / 12.0 + t2 / 720.0;
+  if (t2 < 2.5e-3) {
+    // Series of 1/t^2 - (1 + cos t) / (2 t sin t); the next term is below
+    // 1e-19 for |t| < 0.05 (a step's rotation is far smaller).
+    c = 1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 * (1.0 / 1209600.0)));
   } else {
     const double t = std::sqrt(t2);
     c = 1.0 / t2 - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
@@ -44,12 +46,15 @@ Mat3 rightJacobianInverse(const Vec3& theta) {
 }
 
 Quat expQuat(const Vec3& w) {
-  const double t = w.norm();
-  if (t < 1e-8) {
-    Quat q(1.0, 0.5 * w.x(), 0.5 * w.y(), 0.5 * w.z());
-    q.normalize();
-    return q;
+  const double t2 = w.squaredNorm();
+  if (t2 < 1e-4) {
+    // cos(t/2) and sin(t/2)/t by series: exact to round-off for |t| < 0.01
+    // (next terms below 1e-20), no trigonometry on the step's path.
+    const double c = 1.0 - t2 * (1.0 / 8.0 - t2 * (1.0 / 384.0 - t2 * (1.0 / 46080.0)));
+    const double s = 0.5 - t2 * (1.0 / 48.0 - t2 * (1.0 / 3840.0 - t2 * (1.0 / 645120.0)));
+    return Quat(c, s * w.x(), s * w.y(), s * w.z());
   }
+  const double t = std::sqrt(t2);
   const double s = std::sin(0.5 * t) / t;
   return Quat(std::cos(0.5 * t), s * w.x(), s * w.y(), s * w.z());
 }

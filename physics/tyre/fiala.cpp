@@ -93,21 +93,26 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   double kappa, tanAlpha, alpha;
   SlipState next = prev;
   if (beta < 1.0) {
-    // Backward Euler over the step from the last accepted transient slips.
+    // Backward Euler over the step from the last accepted transient slips
+    // (from the algebraic ones when the wheel has just slowed into this range).
     const double sx = p_.relaxationLengthX, sy = p_.relaxationLengthY;
     const double lim = p_.maxTransientSlip;
-    next.kappa = std::clamp((prev.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -lim, lim);
-    next.tanAlpha = std::clamp((prev.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -lim, lim);
     const double denom = std::max(absVx, p_.lowSpeedBlend0);
+    SlipState from = prev;
+    if (!prev.active) {
+      from.kappa = std::clamp(-vsx / denom, -lim, lim);
+      from.tanAlpha = std::clamp(vsy / denom, -lim, lim);
+    }
+    next.kappa = std::clamp((from.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -lim, lim);
+    next.tanAlpha = std::clamp((from.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -lim, lim);
+    next.active = true;
     kappa = beta * (-vsx / denom) + (1.0 - beta) * next.kappa;
     tanAlpha = beta * (vsy / denom) + (1.0 - beta) * next.tanAlpha;
     alpha = std::atan(tanAlpha);
   } else {
     kappa = -vsx / absVx;
     alpha = std::atan2(vsy, absVx);
-    // Keep the transient slips at their steady state for a smooth return to low speed.
-    next.kappa = std::clamp(kappa, -p_.maxTransientSlip, p_.maxTransientSlip);
-    next.tanAlpha = std::clamp(vsy / absVx, -p_.maxTransientSlip, p_.maxTransientSlip);
+    next.active = false;  // algebraic slips: no transient state to carry
   }
   PatchForces f = fialaPatchForces(p_, kappa, alpha, Fz, g.friction);
   if (beta < 1.0) {

@@ -32,6 +32,9 @@ struct WheelKinematics {
 struct SlipState {
   double kappa = 0.0;     // longitudinal transient slip
   double tanAlpha = 0.0;  // lateral transient slip (tan of the slip angle)
+  // False while the wheel runs above the low-speed range, where the slips are
+  // algebraic: the transient slips then start from the algebraic ones.
+  bool active = true;
 };
 
 struct TyreOutput {

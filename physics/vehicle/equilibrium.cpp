@@ -96,6 +96,7 @@ EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleF
   forces.reset(t);
   const double weight = -v.model.totalMass() * v.model.gravity.z();
   for (int it = 0; it < 60; ++it) {
+    forces.reset(t);
     dae.beginStep(t, q, zv);  // terrain under the wheels at this configuration
     dae.residual(t, q, zv, zv, lambda, r, true, msg);
     double fmax = 0, pmax = 0;

@@ -19,7 +19,7 @@ void VehicleForces::reset(double t) {
     c.brakeDeflection = 0;
   }
   lastAccepted_ = t;
-  stepTime_ = t;
+  planesReady_ = false;
 }
 
 tyre::WheelKinematics VehicleForces::wheelKinematics(const mb::Data& d, int w) const {
@@ -39,12 +39,13 @@ double VehicleForces::relativeSpin(const mb::Data& d, int w) const {
   return rel.y();
 }
 
-tyre::ContactPlane VehicleForces::queryGround(const tyre::WheelKinematics& w, double R0) const {
+tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis,
+                                              double R0) const {
   tyre::ContactPlane plane;
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   const double reach = 2.0 * R0 + 0.5;
   if (options_.raysPerWheel <= 1) {
-    const terrain::Hit h = terrain_.castRay(w.centre + R0 * up, -up, reach);
+    const terrain::Hit h = terrain_.castRay(centre + R0 * up, -up, reach);
     if (!h.hit) return plane;
     plane.valid = true;
     plane.point = h.point;
@@ -55,17 +56,17 @@ tyre::ContactPlane VehicleForces::queryGround(const tyre::WheelKinematics& w, do
   // Envelope: rays along the wheel heading; the ground point deepest inside
   // the wheel circle defines the plane, with its normal pointing from that
   // point to the wheel centre (a curb edge pushes the wheel up and back).
-  Eigen::Vector3d heading = w.spinAxis.cross(up);
+  Eigen::Vector3d heading = spinAxis.cross(up);
   if (heading.squaredNorm() < 1e-6) heading = Eigen::Vector3d::UnitX();
   heading.normalize();
   double best = -1e9;
   for (int i = 0; i < options_.raysPerWheel; ++i) {
     const double s = -1.0 + 2.0 * i / (options_.raysPerWheel - 1);
-    const Eigen::Vector3d from = w.centre + s * options_.footprintHalfLength * R0 * heading + R0 * up;
+    const Eigen::Vector3d from = centre + s * options_.footprintHalfLength * R0 * heading + R0 * up;
     const terrain::Hit h = terrain_.castRay(from, -up, reach);
     if (!h.hit) continue;
-    Eigen::Vector3d r = w.centre - h.point;
-    r -= r.dot(w.spinAxis) * w.spinAxis;  // in the wheel plane
+    Eigen::Vector3d r = centre - h.point;
+    r -= r.dot(spinAxis) * spinAxis;  // in the wheel plane
     const double penetration = R0 - r.norm();
     // Prefer the central ray on equal footing (flat ground).
     const double score = penetration - 1e-9 * std::abs(s);
@@ -81,10 +82,13 @@ tyre::ContactPlane VehicleForces::queryGround(const tyre::WheelKinematics& w, do
   return plane;
 }
 
-void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double t) {
-  stepTime_ = t;
-  for (int w = 0; w < 4; ++w)
-    wheels_[w].plane = queryGround(wheelKinematics(d, w), tyres_[w].unloadedRadius());
+void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
+  // Positions only are current here.
+  for (int w = 0; w < 4; ++w) {
+    const int b = vehicle_.layout.wheels[w].spindle;
+    wheels_[w].plane = queryGround(d.p[b], d.R[b].col(1), tyres_[w].unloadedRadius());
+  }
+  planesReady_ = true;
 }
 
 double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) const {
@@ -119,17 +123,24 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   if (vehicle_.spec.dragArea > 0) {
     const int ch = vehicle_.layout.chassis;
     const Eigen::Vector3d v = mb::pointVelocity(d, ch, vehicle_.model.bodies[ch].com);
-    mb::addWorldWrench(d, ch, mb::pointPosition(d, ch, vehicle_.model.bodies[ch].com),
+    mb::addWorldForce(d, ch, mb::pointPosition(d, ch, vehicle_.model.bodies[ch].com),
                        -vehicle_.spec.dragArea * v.norm() * v);
   }
 }
 
-void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t) {
+void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, double hNext) {
   const double h = std::max(0.0, t - lastAccepted_);
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const tyre::WheelKinematics k = wheelKinematics(d, w);
-    c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h).slipState;
+    // Transient slips matter only in the low-speed range (the last
+    // evaluation's state says whether the wheel is in it).
+    if (c.out.slipState.active || !c.out.inContact)
+      c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h).slipState;
+    else
+      c.slip.active = false;
+    // Ground under the wheel at the end of the next step.
+    c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
     if (c.brakeCapacity > 0) {
       const double limit = c.brakeCapacity / kBrakeStiffness;
       c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin(d, w), -limit, limit);
@@ -138,6 +149,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t) {
     }
   }
   lastAccepted_ = t;
+  planesReady_ = true;
 }
 
 }  // namespace bdfcar::vehicle

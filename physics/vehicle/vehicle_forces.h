@@ -1,9 +1,11 @@
 // The forces a vehicle adds to its multibody model: tyres on the terrain,
 // drive and brake torques on the wheel spin joints, aerodynamic drag.
 //
-// Terrain: rays are cast once per step at the predicted state (beginStep);
-// within the step each wheel sees that local plane, so the residual stays
-// smooth for Newton and the finite-difference Jacobian. Tyres are evaluated
+// Terrain: rays are cast once per step, where the wheels will be: from the
+// accepted state extrapolated over the next step (x + v h; at the first step
+// from the predicted state). Within the step each wheel sees that local
+// plane, so the residual stays smooth for Newton and the finite-difference
+// Jacobian. Tyres are evaluated
 // inside the residual (implicit), which is what keeps the stiff slip dynamics
 // (h * lambda ~ 6 at 10 ms) stable.
 //
@@ -47,9 +49,10 @@ class VehicleForces final : public mb::ForceProvider {
   void setDriveTorque(int wheel, double torque) { wheels_[wheel].driveTorque = torque; }
   void setBrakeCapacity(int wheel, double torque) { wheels_[wheel].brakeCapacity = torque; }
 
+  bool needsBeginStep() const override { return !planesReady_; }
   void beginStep(const mb::Model& model, const mb::Data& data, double t) override;
   void apply(const mb::Model& model, mb::Data& data, double t) override;
-  void acceptStep(const mb::Model& model, const mb::Data& data, double t) override;
+  void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
 
   const std::array<WheelContact, 4>& wheels() const { return wheels_; }
   // Resets the per-step states (start of a run).
@@ -59,7 +62,7 @@ class VehicleForces final : public mb::ForceProvider {
   static constexpr double kBrakeDamping = 1.0e3;    // N m s/rad
 
  private:
-  tyre::ContactPlane queryGround(const tyre::WheelKinematics& w, double radius) const;
+  tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double brakeTorque(const WheelContact& c, double relativeSpin, double h) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
@@ -70,7 +73,7 @@ class VehicleForces final : public mb::ForceProvider {
   std::array<tyre::FialaTyre, 4> tyres_;
   std::array<WheelContact, 4> wheels_;
   double lastAccepted_ = 0;
-  double stepTime_ = 0;  // time of the step being solved
+  bool planesReady_ = false;  // contact planes of the next step prepared at acceptance
 };
 
 }  // namespace bdfcar::vehicle

@@ -38,9 +38,13 @@ void stepBenchmark(benchmark::State& st, const std::string& vehicleFile, const s
   st.counters["residuals_per_step"] = static_cast<double>(c.residuals - c0.residuals) / n;
 }
 
+void BM_PaperStepFlatRoad(benchmark::State& st) { stepBenchmark(st, "vehicles/paper.toml", "terrain/flat.toml"); }
+void BM_PaperStepMeshRoad(benchmark::State& st) { stepBenchmark(st, "vehicles/paper.toml", "terrain/curb.toml"); }
 void BM_SedanStepPlane(benchmark::State& st) { stepBenchmark(st, "vehicles/sedan.toml", ""); }
 void BM_SedanStepFlatRoad(benchmark::State& st) { stepBenchmark(st, "vehicles/sedan.toml", "terrain/flat.toml"); }
 void BM_SedanStepMeshRoad(benchmark::State& st) { stepBenchmark(st, "vehicles/sedan.toml", "terrain/curb.toml"); }
+BENCHMARK(BM_PaperStepFlatRoad)->Iterations(1000);
+BENCHMARK(BM_PaperStepMeshRoad)->Iterations(1000);
 BENCHMARK(BM_SedanStepPlane)->Iterations(1000);
 BENCHMARK(BM_SedanStepFlatRoad)->Iterations(1000);
 BENCHMARK(BM_SedanStepMeshRoad)->Iterations(1000);
