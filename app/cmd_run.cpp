@@ -28,10 +28,11 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
   }
   const auto& c = r.counters;
   const double perStepUs = r.steps > 0 ? 1e6 * r.wallSeconds / r.steps : 0;
-  std::printf("%s: %ld steps of %.4g s, %ld Newton iterations, %ld Jacobians, %ld factorizations, "
-              "%.2f us per step, real-time factor %.0f\n",
+  std::printf("%s: %ld steps of %.4g s, %ld Newton iterations, %ld Jacobians, %ld factorizations "
+              "(%ld refreshed, %ld rescued, %ld split), %.2f us per step, real-time factor %.0f\n",
               spec.name.c_str(), r.steps, spec.integrator.step, c.newtonIterations, c.jacobians, c.factorizations,
-              perStepUs, r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
+              c.refreshes, c.rescues, c.splits, perStepUs,
+              r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
   return 0;
 }
 

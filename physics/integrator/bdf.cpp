@@ -103,13 +103,27 @@ StepReport BdfIntegrator::step(double h) {
       hs *= 2;
     }
   } else {
-    rep = substep(h, due);
+    rep = splitOnFailure(h, due, 0);
   }
   if (rep.ok()) {
     ++counters_.steps;
     ++stepsSinceJacobian_;
   }
   return rep;
+}
+
+// A step that Newton cannot converge (a wheel landing, a curb strike) is
+// rejected and taken as two half steps, recursively down to h / 2^kMaxSplits.
+// The history holds node times, so uneven steps are exact BDF steps.
+StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) {
+  StepReport rep = substep(h, jacobianDue);
+  if (rep.ok() || rep.status != StepStatus::Diverged || depth >= kMaxSplits || !opt_.refreshWhenNotContracting)
+    return rep;
+  ++counters_.splits;
+  const double tEnd = node(0).t + h;
+  rep = splitOnFailure(0.5 * h, false, depth + 1);
+  if (!rep.ok()) return rep;
+  return splitOnFailure(tEnd - node(0).t, false, depth + 1);
 }
 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
@@ -154,10 +168,13 @@ double BdfIntegrator::correctionNorm() const {
   return std::sqrt(s / (2.0 * std::max(1, n_.nv)));
 }
 
-bool BdfIntegrator::newton(double t, const BdfCoefficients& c, StepReport& rep) {
+// Newton iterations from the current iterate: `iterations` of them, or up to
+// maxNewtonIterations until the correction is within tolerance.
+BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
+                                                   bool toTolerance, StepReport& rep) {
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
-  const int maxIt = opt_.newtonIterations > 0 ? opt_.newtonIterations : opt_.maxNewtonIterations;
+  const int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
   double prevNorm = 0;
   for (int it = 1; it <= maxIt; ++it) {
     EvalStatus st;
@@ -169,7 +186,7 @@ bool BdfIntegrator::newton(double t, const BdfCoefficients& c, StepReport& rep) 
     }
     if (st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
-      return false;
+      return NewtonOutcome::Failed;
     }
     ScopedTimer timer(opt_.timing, timers_.backSubstitution);
     // BDF residuals of the current iterate.
@@ -211,32 +228,68 @@ bool BdfIntegrator::newton(double t, const BdfCoefficients& c, StepReport& rep) 
     lam_ += dlam_;
 
     const double norm = correctionNorm();
-    rep.iterations = it;
+    rep.iterations += 1;
     rep.correction = norm;
     rep.contraction = it > 1 ? norm / prevNorm : 0.0;
     if (!std::isfinite(norm) || !d_.allFinite() || !v_.allFinite() || !a_.allFinite() || !lam_.allFinite()) {
       rep.status = StepStatus::Diverged;
       rep.message.set("non-finite Newton correction at t = %.6g s (iteration %d)", t, it);
-      return false;
+      return NewtonOutcome::Failed;
     }
-    const bool converged = norm <= 1.0;
-    const bool growing = it > 1 && norm > 1.0 && norm >= prevNorm;
-    if (growing) {
-      rep.status = StepStatus::Diverged;
-      rep.message.set("Newton not contracting at t = %.6g s: correction %.3g -> %.3g (iteration %d)", t, prevNorm,
-                      norm, it);
-      return false;
+    if (norm <= 1.0) {
+      if (toTolerance) return NewtonOutcome::Converged;
+    } else if (it > 1 && rep.contraction > (toTolerance ? 1.0 : opt_.contractionLimit)) {
+      rep.message.set("Newton not contracting at t = %.6g s: correction %.3g -> %.3g (iteration %d)", t, prevNorm, norm,
+                      it);
+      if (toTolerance) return NewtonOutcome::NotContracting;
     }
-    if (opt_.newtonIterations == 0 && converged) return true;
     prevNorm = norm;
   }
-  if (opt_.newtonIterations == 0) {
-    rep.status = StepStatus::Diverged;
+  if (toTolerance) {
     rep.message.set("Newton did not converge in %d iterations at t = %.6g s (correction %.3g)", maxIt, t,
                     rep.correction);
-    return false;
+    return NewtonOutcome::NotContracting;
   }
-  return true;
+  // A fixed count: fine unless it ended above tolerance without contracting,
+  // or far above tolerance (an impact the fixed count cannot absorb).
+  const bool stalled = rep.correction > opt_.largeCorrection ||
+                       (rep.correction > 1.0 && iterations > 1 && rep.contraction > opt_.contractionLimit);
+  return stalled ? NewtonOutcome::NotContracting : NewtonOutcome::Converged;
+}
+
+
+
+// The rescue of a step the fixed count could not converge: full Newton (the
+// Jacobian re-evaluated at every iterate, since a tyre may have moved between
+// its linear and sliding regimes, where a Jacobian from the other regime makes
+// the chord iteration cycle), halving a correction that does not reduce the
+// residual's correction norm.
+BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoefficients& c, StepReport& rep) {
+  double prev = rep.correction;
+  for (int it = 0; it < opt_.maxNewtonIterations; ++it) {
+    dae_.retract(node(0).q, d_, q_);
+    if (evaluateJacobian(t, rep.message) != EvalStatus::Ok) {
+      rep.status = StepStatus::EvaluationFailed;
+      return NewtonOutcome::Failed;
+    }
+    factorize(c.hPrime);
+    const Vec d0 = d_, v0 = v_, a0 = a_, l0 = lam_;
+    const NewtonOutcome one = newton(t, c, 1, false, rep);
+    if (one == NewtonOutcome::Failed) return one;
+    // Damping: a correction larger than the last one is halved (up to 4 times).
+    for (int halving = 0; halving < 4 && rep.correction > prev && prev > 1.0; ++halving) {
+      d_ = 0.5 * (d_ + d0);
+      v_ = 0.5 * (v_ + v0);
+      a_ = 0.5 * (a_ + a0);
+      lam_ = 0.5 * (lam_ + l0);
+      rep.correction *= 0.5;
+    }
+    if (rep.correction <= 1.0) return NewtonOutcome::Converged;
+    prev = rep.correction;
+  }
+  rep.message.set("Newton did not converge at t = %.6g s (correction %.3g after %d full Newton iterations)", t,
+                  rep.correction, opt_.maxNewtonIterations);
+  return NewtonOutcome::NotContracting;
 }
 
 StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
@@ -277,8 +330,11 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
   dae_.retract(node(0).q, dPred_, q_);
   dae_.beginStep(tNew, q_, vPred_);
 
-  bool fresh = false;
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  // Attempt 1 with the current Jacobian; when Newton stalls: attempt 2 with a
+  // fresh Jacobian from the predictor; then iterate on to tolerance.
+  const bool fixedCount = opt_.newtonIterations > 0;
+  for (;;) {
+    bool fresh = false;
     d_ = dPred_;
     v_ = vPred_;
     a_ = aPred_;
@@ -296,13 +352,25 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
     // bits: refactor only for a real change of step or order.
     if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
     rep.status = StepStatus::Ok;
-    rep.message.set("%s", "");
-    if (newton(tNew, c, rep)) break;
-    if (fresh || !opt_.refreshWhenNotContracting) return rep;
-    ++counters_.refreshes;
-    jacobianDue = true;
+    rep.iterations = 0;
+    NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
+    if (out == NewtonOutcome::Failed) return rep;
+    if (out == NewtonOutcome::Converged || !opt_.refreshWhenNotContracting) break;
+    if (!fresh) {  // stale Jacobian: refresh and redo the step
+      ++counters_.refreshes;
+      jacobianDue = true;
+      continue;
+    }
+    // Fresh Jacobian and still stalled: full Newton to tolerance from here.
+    ++counters_.rescues;
+    out = fullNewton(tNew, c, rep);
+    if (out == NewtonOutcome::Failed) return rep;
+    if (out != NewtonOutcome::Converged) {
+      rep.status = StepStatus::Diverged;
+      return rep;
+    }
+    break;
   }
-  if (!rep.ok()) return rep;
 
   // Accept: the new node becomes node(0).
   head_ = (head_ + kHistory - 1) % kHistory;

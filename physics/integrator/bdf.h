@@ -35,7 +35,15 @@ struct BdfOptions {
   double atol = 1e-8;             // Newton tolerance on the correction, absolute (m, rad)
   double rtol = 1e-6;             // ... relative to the motion over the step
   int jacobianEvery = 1;          // evaluate the Jacobian every N steps; 0 = first step only
-  bool refreshWhenNotContracting = true;  // stale Jacobian + Newton not contracting: refresh, redo
+  // When the fixed count ends above tolerance and the last correction shrank
+  // less than contractionLimit times: refresh a stale Jacobian and redo the
+  // step, then (fresh Jacobian) iterate on to tolerance. Off = the paper's
+  // method as published (for its Tables 3 and 4).
+  bool refreshWhenNotContracting = true;
+  double contractionLimit = 0.5;
+  // A fixed-count step whose last correction is above this many tolerances
+  // has not converged whatever its contraction (an impact): treated as stalled.
+  double largeCorrection = 100.0;
   StartUp startUp = StartUp::Auto;
   bool timing = true;             // accumulate the Jacobian / residual / back-substitution split
 };
@@ -62,9 +70,13 @@ class BdfIntegrator final : public Integrator {
   const SolutionPoint& node(int i) const { return hist_[(head_ + i) % kHistory]; }
   SolutionPoint& node(int i) { return hist_[(head_ + i) % kHistory]; }
   StepReport substep(double h, bool jacobianDue);
+  static constexpr int kMaxSplits = 4;
+  StepReport splitOnFailure(double h, bool jacobianDue, int depth);
   EvalStatus evaluateJacobian(double t, Message& msg);
   void factorize(double hPrime);
-  bool newton(double t, const BdfCoefficients& c, StepReport& rep);
+  enum class NewtonOutcome { Converged, NotContracting, Failed };
+  NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep);
+  NewtonOutcome fullNewton(double t, const BdfCoefficients& c, StepReport& rep);
   double correctionNorm() const;
 
   Dae& dae_;

@@ -44,6 +44,8 @@ struct Counters {
   long factorizations = 0;    // LU factorizations of the iteration matrix
   long solves = 0;            // solves with a factorized matrix (3 per BDF Newton iteration)
   long refreshes = 0;         // Jacobians forced because Newton stopped contracting
+  long rescues = 0;           // steps iterated on to tolerance beyond the fixed count
+  long splits = 0;            // steps rejected and taken as two half steps
 };
 
 // Wall time, seconds, accumulated over the run (when timing is on).

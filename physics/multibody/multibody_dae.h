@@ -30,7 +30,7 @@ class ForceProvider {
 };
 
 struct StateLimits {
-  double maxConstraintViolation = 1e-3;  // |Phi| (m or rad) beyond which a state has diverged
+  double maxConstraintViolation = 1e-2;  // |Phi| (m or rad) beyond which a state has diverged
   double maxVelocity = 1e4;              // |v_i| (m/s, rad/s)
 };
 

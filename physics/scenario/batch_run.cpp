@@ -23,10 +23,11 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   const long steps = std::lround(spec.duration / h);
   const long every = std::max(1L, std::lround(spec.outputInterval / h));
   int lastIterations = 0;
+  double lastCorrection = 0;
   auto record = [&] {
     const vehicle::VehicleSample s = sim.sample();
     const DriverInput in = sim.lastInput();
-    TelemetryInputs ti{sim.steerAt(s.t), in.throttle, in.brake, lastIterations};
+    TelemetryInputs ti{sim.steerAt(s.t), in.throttle, in.brake, lastIterations, lastCorrection};
     if (writer) writer->write(s, ti);
     if (options.keepSamples) {
       r.samples.push_back(s);
@@ -46,6 +47,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
       break;
     }
     lastIterations = rep.iterations;
+    lastCorrection = rep.correction;
     if (i % every == 0) record();
   }
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

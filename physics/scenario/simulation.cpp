@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <Eigen/QR>
 #include <stdexcept>
 
 #include "integrator/bdf.h"
@@ -113,18 +114,49 @@ void Simulation::makeIntegrator() {
   }
 }
 
+Simulation::StartPose Simulation::startPose() const {
+  const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
+  const Eigen::Matrix3d yaw = Eigen::AngleAxisd(spec_.startHeading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d start(spec_.startX, spec_.startY, 0.0);
+  auto groundAt = [&](const Eigen::Vector3d& p) {
+    const terrain::Hit g = terrain_->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
+    return g.hit ? g.point.z() : 0.0;
+  };
+  // Least-squares plane z = c0 + c1 x + c2 y through the ground under the wheels.
+  Eigen::Matrix<double, 4, 3> A;
+  Eigen::Vector4d b;
+  for (int w = 0; w < 4; ++w) {
+    const mb::Vec3 centre = vehicle_.spec.bodies[vehicle_.layout.wheels[w].spindle].com;
+    const Eigen::Vector3d p = start + yaw * Eigen::Vector3d(centre.x(), centre.y(), 0.0);
+    A.row(w) << 1.0, p.x(), p.y();
+    b(w) = groundAt(p);
+  }
+  const Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
+  Eigen::Vector3d n(-c(1), -c(2), 1.0);
+  n.normalize();
+  const Eigen::Vector3d heading = yaw.col(0);
+  const Eigen::Vector3d x = (heading - heading.dot(n) * n).normalized();
+  StartPose pose;
+  pose.rotation.col(0) = x;
+  pose.rotation.col(1) = n.cross(x);
+  pose.rotation.col(2) = n;
+  pose.groundZ = c(0) + c(1) * start.x() + c(2) * start.y();
+  pose.origin = Eigen::Vector3d(start.x(), start.y(), pose.groundZ) + vehicle_.spec.designHeight * n;
+  return pose;
+}
+
 vehicle::EquilibriumReport Simulation::prepare() {
   const mb::Model& m = vehicle_.model;
   const mb::Body& ch = m.bodies[vehicle_.layout.chassis];
   const double t0 = -spec_.settleTime;
-  // Start pose: design configuration moved to the start point, on the ground.
+  // Start pose: the design configuration placed on the ground at the start
+  // point, its chassis aligned with the plane through the ground under the
+  // four wheels (on a slope the car starts on the slope, not in it).
   integ::Vec q = vehicle::designPositions(vehicle_);
-  const terrain::Hit g = terrain_->castRay(Eigen::Vector3d(spec_.startX, spec_.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
-  const double groundZ = g.hit ? g.point.z() : 0.0;
-  q(ch.qIndex + 0) = spec_.startX;
-  q(ch.qIndex + 1) = spec_.startY;
-  q(ch.qIndex + 2) = groundZ + vehicle_.spec.designHeight;
-  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(spec_.startHeading, Eigen::Vector3d::UnitZ()));
+  const StartPose pose = startPose();
+  const double groundZ = pose.groundZ;
+  q.segment<3>(ch.qIndex) = pose.origin;
+  const Eigen::Quaterniond yaw(pose.rotation);
   q(ch.qIndex + 3) = yaw.w();
   q(ch.qIndex + 4) = yaw.x();
   q(ch.qIndex + 5) = yaw.y();
@@ -141,7 +173,7 @@ vehicle::EquilibriumReport Simulation::prepare() {
   integ::Vec v = integ::Vec::Zero(m.nv);
   mb::Data& d = dae_->data();
   mb::updatePositions(m, q, d);
-  const Eigen::Vector3d worldVel = spec_.initialSpeed * (yaw * Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d worldVel = spec_.initialSpeed * (d.R[vehicle_.layout.chassis] * Eigen::Vector3d::UnitX());
   v.segment<3>(ch.vIndex) = d.R[vehicle_.layout.chassis].transpose() * worldVel;
   for (int w = 0; w < 4; ++w) {
     const vehicle::WheelLayout& wl = vehicle_.layout.wheels[w];

@@ -72,6 +72,12 @@ class Simulation {
   double driveTorque(int wheel) const { return forces_->wheels()[wheel].driveTorque; }
 
  private:
+  struct StartPose {
+    Eigen::Matrix3d rotation;
+    Eigen::Vector3d origin;
+    double groundZ = 0;
+  };
+  StartPose startPose() const;
   struct ChassisState {
     Eigen::Vector3d com;
     double yaw = 0, vx = 0;

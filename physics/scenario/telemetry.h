@@ -17,6 +17,7 @@ struct TelemetryInputs {
   double steer = 0;      // normalised steering input s
   double throttle = 0, brake = 0;
   int newtonIterations = 0;
+  double newtonCorrection = 0;  // weighted norm of the last correction (1 = tolerance)
 };
 
 class TelemetryWriter {

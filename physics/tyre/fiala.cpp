@@ -47,6 +47,9 @@ PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, d
   return out;
 }
 
+constexpr double FialaTyre::kContactSmoothing;
+constexpr double FialaTyre::kAirborneClearance;
+
 double highSpeedWeight(const FialaParams& p, double absVx) {
   if (absVx <= p.lowSpeedBlend0) return 0.0;
   if (absVx >= p.lowSpeedBlend1) return 1.0;
@@ -76,14 +79,19 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   const double R0 = p_.unloadedRadius;
   const Vec3 bottom = w.centre + R0 * d;
   const double delta = (g.point - bottom).dot(ez);
-  if (delta <= 0) {
-    out.slipState = SlipState{};
-    return out;
-  }
   const Vec3 yc = ez.cross(xc);
   const Vec3& v = w.centreVelocity;
   const double vx = v.dot(xc), vy = v.dot(yc), vz = v.dot(ez);
-  const double Fz = std::max(0.0, p_.verticalStiffness * delta - p_.verticalDamping * vz);
+  // Normal load max(0, kz delta - cz vz) with the corner at zero rounded over
+  // kContactSmoothing newtons: a wheel striking a curb or landing switches
+  // contact inside a step, and Newton cannot converge across a kink. The
+  // difference is eps^2 / (4 Fz): below 0.01 N at the loads of a manoeuvre.
+  const double raw = p_.verticalStiffness * delta - p_.verticalDamping * vz;
+  if (delta <= -kAirborneClearance || raw < -1e3 * kContactSmoothing) {
+    out.slipState = SlipState{};
+    return out;
+  }
+  const double Fz = 0.5 * (raw + std::sqrt(raw * raw + kContactSmoothing * kContactSmoothing));
 
   const double vsx = vx - w.spinRate * (R0 - delta);
   const double vsy = vy;
@@ -95,19 +103,29 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   if (beta < 1.0) {
     // Backward Euler over the step from the last accepted transient slips
     // (from the algebraic ones when the wheel has just slowed into this range).
+    // The tread deflection is bounded by friction: once the patch slides it
+    // stays where its force is the friction force (slips U Fz / C_kappa and,
+    // for the lateral law, 3 U Fz / C_alpha, full sliding).
     const double sx = p_.relaxationLengthX, sy = p_.relaxationLengthY;
-    const double lim = p_.maxTransientSlip;
+    const double Upeak = p_.uMax * std::clamp(g.friction, 0.1, 1.0) / p_.referenceFriction;
+    const double limX = std::min(p_.maxTransientSlip, Upeak * Fz / p_.slipStiffness);
+    const double limY = std::min(p_.maxTransientSlip, 3.0 * Upeak * Fz / p_.corneringStiffness);
     const double denom = std::max(absVx, p_.lowSpeedBlend0);
     SlipState from = prev;
     if (!prev.active) {
-      from.kappa = std::clamp(-vsx / denom, -lim, lim);
-      from.tanAlpha = std::clamp(vsy / denom, -lim, lim);
+      from.kappa = -vsx / denom;
+      from.tanAlpha = vsy / denom;
     }
-    next.kappa = std::clamp((from.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -lim, lim);
-    next.tanAlpha = std::clamp((from.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -lim, lim);
+    next.kappa = std::clamp((from.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -limX, limX);
+    next.tanAlpha = std::clamp((from.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -limY, limY);
     next.active = true;
-    kappa = beta * (-vsx / denom) + (1.0 - beta) * next.kappa;
-    tanAlpha = beta * (vsy / denom) + (1.0 - beta) * next.tanAlpha;
+    // Damping of the slip velocities enters as slip, ahead of the force law,
+    // so that the total force stays within friction (a locked wheel sliding
+    // at walking pace must not brake harder than mu Fz).
+    const double dampX = -p_.lowSpeedDampingX * vsx / p_.slipStiffness;
+    const double dampY = p_.lowSpeedDampingY * vsy / p_.corneringStiffness;
+    kappa = beta * (-vsx / denom) + (1.0 - beta) * (next.kappa + dampX);
+    tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (next.tanAlpha + dampY);
     alpha = std::atan(tanAlpha);
   } else {
     kappa = -vsx / absVx;
@@ -115,11 +133,10 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
     next.active = false;  // algebraic slips: no transient state to carry
   }
   PatchForces f = fialaPatchForces(p_, kappa, alpha, Fz, g.friction);
-  if (beta < 1.0) {
-    f.Fx -= (1.0 - beta) * p_.lowSpeedDampingX * vsx;
-    f.Fy -= (1.0 - beta) * p_.lowSpeedDampingY * vsy;
-  }
-  const double My = -sineStep(absVx, 0.125, 0.5) * p_.rollingResistance * Fz * sgn(w.spinRate);
+  // Rolling resistance opposes the spin: sign(omega) made smooth below
+  // 0.5 rad/s (a locked wheel's omega dithers about zero; a jump there would
+  // stop Newton from converging). Exactly +-1 at road speeds.
+  const double My = -sineStep(absVx, 0.125, 0.5) * p_.rollingResistance * Fz * std::tanh(w.spinRate / 0.5);
 
   out.inContact = true;
   out.deflection = delta;

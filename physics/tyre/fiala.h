@@ -12,7 +12,8 @@
 // tyre deflections (a stiff spring, kappa' = -integral(vsx)/sigma): a parked
 // or braked car holds on a slope without creeping, and braking to a stop
 // ends without jitter. Light damping of the slip velocities is blended in
-// below the same speed. Above lowSpeedBlend[1] the law is exactly the spec's.
+// below the same speed, as slip ahead of the force law so that the force
+// stays within friction. Above lowSpeedBlend[1] the law is exactly the spec's.
 #pragma once
 
 #include "tyre/tyre.h"
@@ -36,7 +37,7 @@ struct FialaParams {
   double lowSpeedBlend1 = 2.0;         // m/s: above, the exact Fiala slips only
   double lowSpeedDampingX = 4.0e4;     // N s/m on the longitudinal slip velocity at standstill
   double lowSpeedDampingY = 2.0e4;     // N s/m on the lateral slip velocity at standstill
-  double maxTransientSlip = 1.5;       // wind-up limit of the transient slips
+  double maxTransientSlip = 1.5;       // absolute cap of the transient slips (the friction limit is lower)
 };
 
 struct PatchForces {
@@ -59,6 +60,8 @@ class FialaTyre final : public TyreModel {
   double unloadedRadius() const override { return p_.unloadedRadius; }
   double width() const override { return p_.width; }
   const FialaParams& params() const { return p_; }
+  static constexpr double kContactSmoothing = 10.0;   // N, rounding of the contact corner
+  static constexpr double kAirborneClearance = 0.01;  // m above the ground: no contact at all
 
  private:
   FialaParams p_;

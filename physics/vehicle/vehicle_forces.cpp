@@ -93,8 +93,10 @@ void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
 
 double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) const {
   if (c.brakeCapacity <= 0) return 0.0;
+  // Spring-damper on the spin since the wheel last slipped, saturated smoothly
+  // at the available torque (a kink would make Newton cycle at the limit).
   const double t = kBrakeStiffness * (c.brakeDeflection + h * spin) + kBrakeDamping * spin;
-  return -std::clamp(t, -c.brakeCapacity, c.brakeCapacity);
+  return -c.brakeCapacity * std::tanh(t / c.brakeCapacity);
 }
 
 void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {

@@ -1,0 +1,76 @@
+// Regression against the independent reference (Chrono, 31.25 us, converged):
+// the reference sedan's J-turn, at 1 ms and at the paper's setting (10 ms,
+// 2 Newton iterations, Jacobian every 200 steps).
+//
+// Tolerance: 0.25 % RMS of the peak for yaw rate and lateral acceleration.
+// Measured here: 0.05 % / 0.04 % at 1 ms. The reference itself moves by
+// 0.16 % of the peak (max) between two formulations of the same model at
+// 31.25 us (README, split-wrench vs standard), and the smallest real model
+// error found so far (the drive torque reacting on the wheel carrier instead
+// of nowhere, as the reference applies it) gave 0.57 %: the bound sits
+// between what the reference can resolve and what must be caught.
+#include <gtest/gtest.h>
+
+#include "reference_data.h"
+#include "scenario/batch_run.h"
+#include "scenario/scenario_spec.h"
+
+using namespace bdfcar;
+
+namespace {
+
+std::string source(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/" + rel; }
+
+struct Comparison {
+  test::ColumnError yawRate, lateral, roll;
+};
+
+Comparison runJTurn(double step, int newton, int jacobianEvery, const std::string& vehicle = "sedan.toml") {
+  scenario::ScenarioSpec s = scenario::loadScenarioFile(source("assets/scenarios/jturn.toml"));
+  s.vehicleFile = source("assets/vehicles/" + vehicle);
+  s.integrator.step = step;
+  s.integrator.newtonIterations = newton;
+  s.integrator.jacobianEvery = jacobianEvery;
+  scenario::Simulation sim(s);
+  const scenario::RunResult r = scenario::runScenario(sim, {});
+  EXPECT_TRUE(r.ok) << r.failure;
+  std::vector<double> yaw, ay, roll;
+  for (const auto& x : r.samples) {
+    yaw.push_back(x.yawRate);
+    ay.push_back(x.ay);
+    roll.push_back(x.roll);
+  }
+  const test::Table ref = test::readCsv(source("tests/data/ref_jturn.csv"));
+  EXPECT_EQ(r.samples.size(), ref.values.at("time_s").size());
+  return {test::compareColumn(ref, yaw, "yawrate_radps"), test::compareColumn(ref, ay, "ay_mps2"),
+          test::compareColumn(ref, roll, "roll_rad")};
+}
+
+}  // namespace
+
+TEST(Reference, JTurnAtOneMillisecondMatchesChrono) {
+  const Comparison c = runJTurn(0.001, 2, 1);
+  EXPECT_LT(c.yawRate.rmsPercent, 0.25);
+  EXPECT_LT(c.lateral.rmsPercent, 0.25);
+  // Roll: 0.23 % measured; the reference's roll differs by 0.05 % of its
+  // peak between its own formulations; same bound.
+  EXPECT_LT(c.roll.rmsPercent, 0.5);
+}
+
+TEST(Reference, JTurnAtThePapersSettingMatchesChrono) {
+  // 10 ms, BDF2, 2 Newton iterations, Jacobian every 200 steps: the step the
+  // reference code itself cannot run at (it diverges at 10 ms).
+  const Comparison c = runJTurn(0.01, 2, 200);
+  EXPECT_LT(c.yawRate.rmsPercent, 0.25);
+  // The steering ramp's corners put a two-step spike into a_y at 10 ms
+  // (0.19 % measured): twice the 1 ms bound.
+  EXPECT_LT(c.lateral.rmsPercent, 0.5);
+}
+
+TEST(Reference, PaperTopologyStaysCloseToTheReference) {
+  // Same car in the paper's Table 1 topology (strut turning with the knuckle,
+  // massless rear links, equivalent rear spring): 0.22 % measured.
+  const Comparison c = runJTurn(0.01, 2, 200, "paper.toml");
+  EXPECT_LT(c.yawRate.rmsPercent, 0.5);
+  EXPECT_LT(c.lateral.rmsPercent, 0.75);
+}

@@ -1,0 +1,288 @@
+// Renderer tests with a synthetic (kinematic, no physics) lane change. Built
+// twice: test_render links the headless OSMesa backend; test_render_window
+// (BDFCAR_TEST_WINDOW) links the SDL2 window backend and runs it on SDL's
+// "offscreen" video driver. DISPLAY is unset: no display server is used.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "render/camera_rig.h"
+#include "render/frame.h"
+#include "render/gl_check.h"
+#include "render/png_queue.h"
+#include "render/png_writer.h"
+#include "render/scene.h"
+#include "render/surface_sampler.h"
+#include "render/synthetic_drive.h"
+#include "render/video_pipe.h"
+#ifdef BDFCAR_TEST_WINDOW
+#include "render/window.h"
+#else
+#include "render/headless.h"
+#endif
+
+namespace bdfcar::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+SyntheticDrive laneChange() { return SyntheticDrive{scenario::makeIso3888Course(1.9, 0.0, -1.75)}; }
+
+// Flat ground, two-lane road, the ISO 3888-1 course, the sedan body (pure red paint).
+SceneConfig testScene(bool hud = true) {
+  SceneConfig cfg;
+  cfg.terrain.road.present = true;
+  cfg.terrain.road.startX = -60;
+  cfg.terrain.road.endX = 300;
+  cfg.course = laneChange().course;
+  cfg.geometry.bodyMesh = "assets/models/sedan_body.obj";
+  cfg.geometry.bodyColour = Eigen::Vector3d(0.85, 0.05, 0.05);
+  cfg.hud = hud;
+  return cfg;
+}
+
+// Renders the scene's state through whichever backend this executable links.
+class Renderer {
+ public:
+  Renderer(Scene& scene, int w, int h) {
+    unsetenv("DISPLAY");
+#ifdef BDFCAR_TEST_WINDOW
+    setenv("SDL_VIDEODRIVER", "offscreen", 1);
+    WindowOptions o;
+    o.width = w;
+    o.height = h;
+    o.vsync = false;
+    o.multisample = 0;
+    window_ = std::make_unique<Window>(scene, o);
+#else
+    headless_ = std::make_unique<HeadlessRenderer>(scene, w, h);
+#endif
+  }
+  Frame render() {
+#ifdef BDFCAR_TEST_WINDOW
+    Frame f;
+    window_->present(&f);
+    return f;
+#else
+    return headless_->render();
+#endif
+  }
+
+ private:
+#ifdef BDFCAR_TEST_WINDOW
+  std::unique_ptr<Window> window_;
+#else
+  std::unique_ptr<HeadlessRenderer> headless_;
+#endif
+};
+
+// Pixels of the body paint: strongly red (lit or shaded).
+bool isPaint(const std::uint8_t* p) { return p[0] > 90 && p[0] > 3 * p[1] && p[0] > 3 * p[2]; }
+
+// Count of pixels in [x0, x1) x [y0, y1) (fractions of the frame) satisfying pred.
+template <typename Pred>
+int countPixels(const Frame& f, double x0, double x1, double y0, double y1, Pred pred) {
+  int n = 0;
+  for (int y = int(y0 * f.height); y < int(y1 * f.height); ++y)
+    for (int x = int(x0 * f.width); x < int(x1 * f.width); ++x) n += pred(f.pixel(x, y)) ? 1 : 0;
+  return n;
+}
+
+// Renders the synthetic lane change at time t.
+Frame frameAt(Scene& scene, Renderer& r, double t) {
+  const SyntheticFrame s = syntheticLaneChange(laneChange(), t);
+  scene.update(s.view, s.hud);
+  return r.render();
+}
+
+TEST(Render, LaneChangeFramesHaveRequestedSizeAndShowTheCarInTheChaseView) {
+  Scene scene(testScene());
+  ASSERT_TRUE(scene.warnings().empty()) << scene.warnings().front();
+  Renderer r(scene, 320, 180);
+  for (double t : {0.5, 2.0, 3.5, 5.0}) {  // straight, entering, in the side lane, leaving
+    const Frame f = frameAt(scene, r, t);
+    ASSERT_EQ(f.width, 320);
+    ASSERT_EQ(f.height, 180);
+    ASSERT_EQ(f.rgba.size(), 320u * 180u * 4u);
+    EXPECT_FALSE(isAllBlack(f));
+    // The chase camera keeps the car in the middle of the lower picture...
+    const int centre = countPixels(f, 0.3, 0.7, 0.35, 0.95, isPaint);
+    EXPECT_GT(centre, 0.08 * (0.4 * 320) * (0.6 * 180)) << "t = " << t;
+    // ... and nowhere near the picture's left and right edges.
+    EXPECT_LT(countPixels(f, 0.0, 0.15, 0.3, 1.0, isPaint) + countPixels(f, 0.85, 1.0, 0.3, 1.0, isPaint), 20);
+  }
+}
+
+TEST(Render, SuccessiveFramesDifferAsTheCarMoves) {
+  Scene scene(testScene());
+  scene.setCamera(CameraMode::TopDown);  // world-fixed orientation: the road scrolls under the car
+  Renderer r(scene, 320, 180);
+  const Frame a = frameAt(scene, r, 2.0), b = frameAt(scene, r, 2.1);
+  int changed = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+    changed += (std::abs(a.rgba[i] - b.rgba[i]) + std::abs(a.rgba[i + 1] - b.rgba[i + 1]) > 30) ? 1 : 0;
+  EXPECT_GT(changed, 500);
+}
+
+TEST(Render, HudTextIsDrawn) {
+  // Top left, above the horizon: with the HUD a dark panel holding bright text
+  // strokes; without it only sky, which is never that dark.
+  auto lum = [](const std::uint8_t* p) { return (p[0] + p[1] + p[2]) / 3; };
+  int dark[2] = {0, 0}, bright[2] = {0, 0};
+  for (int hud : {1, 0}) {
+    Scene scene(testScene(hud == 1));
+    Renderer r(scene, 320, 180);
+    const Frame f = frameAt(scene, r, 1.0);
+    dark[hud] = countPixels(f, 0.04, 0.3, 0.04, 0.28, [&](const std::uint8_t* p) { return lum(p) < 110; });
+    bright[hud] = countPixels(f, 0.04, 0.3, 0.04, 0.28, [&](const std::uint8_t* p) { return lum(p) > 170; });
+  }
+  const int area = int(0.26 * 320) * int(0.24 * 180);
+  EXPECT_GT(dark[1], area / 3);   // the panel
+  EXPECT_GT(bright[1], 100);      // text on it
+  EXPECT_LT(bright[1], area / 2);
+  EXPECT_EQ(dark[0], 0);          // sky only
+}
+
+TEST(Render, EveryCameraModeRendersItsOwnView) {
+  Scene scene(testScene());
+  Renderer r(scene, 320, 180);
+  std::vector<Frame> frames;
+  for (CameraMode m : {CameraMode::Chase, CameraMode::Hood, CameraMode::Orbit, CameraMode::TopDown}) {
+    scene.setCamera(m);
+    frames.push_back(frameAt(scene, r, 2.5));
+    EXPECT_FALSE(isAllBlack(frames.back())) << cameraName(m);
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    for (std::size_t j = i + 1; j < frames.size(); ++j) EXPECT_NE(frames[i].rgba, frames[j].rgba) << i << " vs " << j;
+  EXPECT_EQ(scene.nextCamera(), CameraMode::Chase);
+}
+
+TEST(Render, HiddenBodyShowsTheSuspensionStruts) {
+  // Strut yellow (also seen through the 30 % body) appears only once the body stops hiding the links.
+  auto strut = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 110 && p[2] < 90; };
+  Scene scene(testScene(false));
+  scene.setCamera(CameraMode::Orbit);
+  scene.orbitBy(0.0, 0.0, 0.6);
+  Renderer r(scene, 480, 270);
+  const int solid = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
+  scene.setBodyDisplay(BodyDisplay::Hidden);
+  const int hidden = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
+  scene.setBodyDisplay(BodyDisplay::Translucent);
+  const int translucent = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
+  EXPECT_GT(hidden, solid + 30);
+  EXPECT_GT(translucent, solid + 15);
+}
+
+TEST(Render, FullHdFrameAt1280x720) {
+  Scene scene(testScene());
+  Renderer r(scene, 1280, 720);
+  const Frame f = frameAt(scene, r, 3.0);
+  ASSERT_EQ(f.width, 1280);
+  ASSERT_EQ(f.height, 720);
+  EXPECT_GT(countPixels(f, 0.3, 0.7, 0.35, 0.95, isPaint), 20000);
+}
+
+TEST(Render, MissingBodyMeshFallsBackToABoxWithAWarning) {
+  SceneConfig cfg = testScene();
+  cfg.geometry.bodyMesh = "assets/models/no_such_body.obj";
+  Scene scene(cfg);
+  ASSERT_EQ(scene.warnings().size(), 1u);
+  EXPECT_NE(scene.warnings()[0].find("no_such_body.obj"), std::string::npos);
+  Renderer r(scene, 320, 180);
+  EXPECT_GT(countPixels(frameAt(scene, r, 1.0), 0.3, 0.7, 0.35, 0.95, isPaint), 500);
+}
+
+TEST(Render, StartUpCheckFailuresAreErrorsNotBlackPictures) {
+  EXPECT_THROW(requireGlContext(nullptr, "test"), RenderError);
+  try {
+    requireGlContext(reinterpret_cast<const unsigned char*>(""), "test backend");
+    FAIL() << "an empty GL_RENDERER must be rejected";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("GL_RENDERER"), std::string::npos);
+  }
+  const Frame black = makeFrame(8, 8);
+  EXPECT_TRUE(isAllBlack(black));
+  EXPECT_THROW(requireNotBlack(black, "test"), RenderError);
+  EXPECT_THROW(makeFrame(0, 10), RenderError);
+}
+
+#ifndef BDFCAR_TEST_WINDOW
+TEST(Render, GlCallsResolveToOsMesaInTheHeadlessExecutable) {
+  // The link-order trap: if glvnd's libGL came first, gl* would resolve there and frames would be black.
+  EXPECT_NE(glSymbolProvider("glGetString").find("OSMesa"), std::string::npos) << glSymbolProvider("glGetString");
+  Scene scene(testScene());
+  EXPECT_THROW(HeadlessRenderer(scene, 0, 0), RenderError);
+  HeadlessRenderer r(scene, 64, 36);
+  EXPECT_NE(r.glRenderer().find("llvmpipe"), std::string::npos) << r.glRenderer();
+}
+#endif
+
+TEST(RenderOutput, PngFilesAreWrittenDirectlyAndByTheWorkerThread) {
+  const fs::path dir = fs::temp_directory_path() / "bdfcar_test_render_png";
+  fs::create_directories(dir);
+  Frame f = makeFrame(16, 8);
+  for (std::size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = static_cast<std::uint8_t>(i * 7);
+  writePng((dir / "direct.png").string(), f);
+  {
+    PngQueue queue(1, 2);
+    for (int i = 0; i < 5; ++i) queue.push((dir / ("q" + std::to_string(i) + ".png")).string(), f);
+    queue.flush();
+    EXPECT_EQ(queue.written(), 5);
+    queue.push((dir / "missing-folder" / "x.png").string(), f);
+    EXPECT_THROW(queue.flush(), RenderError);
+  }
+  for (const char* name : {"direct.png", "q0.png", "q4.png"}) {
+    std::ifstream in(dir / name, std::ios::binary);
+    char sig[8] = {};
+    in.read(sig, 8);
+    EXPECT_EQ(std::string(sig + 1, 3), "PNG") << name;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(RenderOutput, VideoThroughFfmpeg) {
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg not installed";
+  const fs::path file = fs::temp_directory_path() / "bdfcar_test_render.mp4";
+  {
+    VideoPipe video(file.string(), 33, 17, VideoOptions{25.0});  // odd size: padded to even
+    Frame f = makeFrame(33, 17);
+    for (int i = 0; i < 10; ++i) {
+      std::fill(f.rgba.begin(), f.rgba.end(), static_cast<std::uint8_t>(20 * i));
+      video.write(f);
+    }
+    EXPECT_THROW(video.write(makeFrame(8, 8)), RenderError);
+    video.close();
+    EXPECT_EQ(video.frames(), 10);
+  }
+  EXPECT_GT(fs::file_size(file), 100u);
+  fs::remove(file);
+}
+
+TEST(RenderGeometry, SurfaceSamplerInterpolatesTheTerrainTriangles) {
+  terrain::TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {10, 0, 1}, {10, 10, 2}, {0, 10, 1}};  // plane z = 0.1 x + 0.1 y
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const SurfaceSampler s(m, 4);
+  EXPECT_NEAR(*s.height(2.0, 3.0), 0.5, 1e-9);
+  EXPECT_NEAR(*s.height(9.0, 1.0), 1.0, 1e-9);
+  EXPECT_FALSE(s.height(-1.0, 5.0).has_value());
+  EXPECT_EQ(s.heightOr(20.0, 5.0, -3.0), -3.0);
+}
+
+TEST(RenderGeometry, ChaseCameraSitsBehindAndAboveTheCarWhateverItsHeading) {
+  vehicle::BodyPose pose;
+  pose.position = Eigen::Vector3d(5, 2, 0.5);
+  pose.rotation = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ());
+  const CameraPose c = cameraPose(CameraMode::Chase, pose, OrbitState{});
+  const Eigen::Vector3d forward(std::cos(1.0), std::sin(1.0), 0);
+  EXPECT_LT((c.eye - pose.position).dot(forward), -5.0);
+  EXPECT_GT(c.eye.z(), pose.position.z() + 1.0);
+  EXPECT_GT((c.centre - c.eye).dot(forward), 0.0);
+  EXPECT_NEAR(headingOf(pose), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace bdfcar::render
