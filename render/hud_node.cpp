@@ -1,0 +1,161 @@
+#include "render/hud_node.h"
+
+#include <osg/BlendFunc>
+#include <osg/Geode>
+#include <osgText/Font>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace bdfcar::render {
+namespace {
+
+constexpr int kFigureColumns = 18, kFigureLines = 7;
+
+// A bold monospaced TrueType font if one is installed, else OSG's built-in font.
+osg::ref_ptr<osgText::Font> loadFont(bool& unicode) {
+  for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSansMono-Bold.ttf",
+                           "/usr/share/fonts/truetype/liberation/LiberationMono-Bold.ttf",
+                           "/usr/share/fonts/truetype/noto/NotoSansMono-Bold.ttf"}) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) continue;
+    if (osg::ref_ptr<osgText::Font> f = osgText::readRefFontFile(path)) {
+      unicode = true;
+      return f;
+    }
+  }
+  unicode = false;
+  return osgText::Font::getDefaultFont();
+}
+
+// printf into a std::string.
+template <typename... Args>
+std::string format(const char* fmt, Args... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+// Axis-aligned quad from (x0, y0) to (x1, y1) appended to a vertex array.
+void addRect(osg::Vec3Array& v, float x0, float y0, float x1, float y1) {
+  v.push_back({x0, y0, 0});
+  v.push_back({x1, y0, 0});
+  v.push_back({x1, y1, 0});
+  v.push_back({x0, y1, 0});
+}
+
+}  // namespace
+
+HudNode::HudNode() : camera_(new osg::Camera) {
+  camera_->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
+  camera_->setRenderOrder(osg::Camera::POST_RENDER);
+  camera_->setClearMask(0);  // drawn without depth test: no need to clear it
+  camera_->setAllowEventFocus(false);
+  camera_->setViewMatrix(osg::Matrix::identity());
+  osg::StateSet* ss = camera_->getOrCreateStateSet();
+  ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+  ss->setMode(GL_FOG, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+  ss->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+  ss->setMode(GL_BLEND, osg::StateAttribute::ON);
+  ss->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA));
+
+  font_ = loadFont(unicode_);
+  panels_ = new osg::Geometry;
+  panels_->setUseDisplayList(false);
+  panels_->setDataVariance(osg::Object::DYNAMIC);
+  osg::ref_ptr<osg::Vec4Array> shade = new osg::Vec4Array;
+  shade->push_back(osg::Vec4(0.02f, 0.03f, 0.06f, 0.62f));
+  panels_->setColorArray(shade.get(), osg::Array::BIND_OVERALL);
+  panels_->setVertexArray(new osg::Vec3Array);
+  panels_->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 0));
+
+  figures_ = makeText(osgText::Text::LEFT_TOP);
+  course_ = makeText(osgText::Text::RIGHT_TOP);
+  message_ = makeText(osgText::Text::CENTER_BOTTOM);
+  osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+  geode->addDrawable(panels_.get());
+  geode->addDrawable(figures_.get());
+  geode->addDrawable(course_.get());
+  geode->addDrawable(message_.get());
+  camera_->addChild(geode);
+  layout(1280, 720);
+}
+
+// A dynamic white text block with the HUD font.
+osg::ref_ptr<osgText::Text> HudNode::makeText(osgText::Text::AlignmentType align) {
+  osg::ref_ptr<osgText::Text> t = new osgText::Text;
+  t->setDataVariance(osg::Object::DYNAMIC);
+  t->setFont(font_.get());
+  t->setAlignment(align);
+  t->setColor(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
+  t->setLineSpacing(0.18f);
+  t->setCharacterSizeMode(osgText::Text::OBJECT_COORDS);
+  return t;
+}
+
+// osgText re-lays out glyphs on every setText: skip it when nothing changed.
+void HudNode::setIfChanged(osgText::Text& text, const std::string& value) {
+  if (text.getText().createUTF8EncodedString() != value) text.setText(value, osgText::String::ENCODING_UTF8);
+}
+
+// Formats the figures; course and message panels only appear when they have content.
+void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay body) {
+  const char* deg = unicode_ ? "\u00b0" : " deg";
+  const char* accel = unicode_ ? "m/s\u00b2" : "m/s^2";
+  std::string fig = format("%6.1f km/h\n", hud.speed * 3.6);
+  fig += format("steer %+7.1f%s\n", hud.steeringWheelAngle * 180.0 / M_PI, deg);
+  fig += format("a_y   %+6.2f %s\n", hud.lateralAcceleration, accel);
+  fig += format("yaw   %+6.1f%s/s\n", hud.yawRate * 180.0 / M_PI, deg);
+  fig += format("RTF   %6.2f x\n", hud.realTimeFactor);
+  fig += format("step  %6.0f us\n", hud.stepTime * 1e6);
+  fig += format("thr %3.0f%%  brk %3.0f%%", 100 * std::clamp(hud.throttle, 0.0, 1.0), 100 * std::clamp(hud.brake, 0.0, 1.0));
+  setIfChanged(*figures_, fig);
+
+  std::string right = format("t %7.2f s\n%s", hud.time, cameraName(camera));
+  if (body != BodyDisplay::Solid) right += format(" / body %s", bodyDisplayName(body));
+  if (hud.coneHits >= 0) right += format("\ncones hit %d", hud.coneHits);
+  if (hud.courseTime >= 0) right += format("\ncourse %6.2f s", hud.courseTime);
+  setIfChanged(*course_, right);
+  setIfChanged(*message_, hud.message);
+
+  const bool showMessage = !hud.message.empty();
+  const int courseLines = 1 + static_cast<int>(std::count(right.begin(), right.end(), '\n'));
+  if (showMessage != showMessage_ || courseLines != courseLines_) {
+    showMessage_ = showMessage;
+    courseLines_ = courseLines;
+    const int w = width_, h = height_;
+    width_ = 0;  // force the panels to be rebuilt
+    layout(w, h);
+  }
+}
+
+// Character size follows the window height so the HUD reads the same at any size.
+void HudNode::layout(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  camera_->setProjectionMatrix(osg::Matrix::ortho2D(0, width, 0, height));
+  const float size = std::clamp(height / 34.0f, 10.0f, 26.0f), margin = 0.6f * size, pad = 0.4f * size;
+  const float lineHeight = size * 1.18f, charWidth = size * 0.6f;
+  for (osgText::Text* t : {figures_.get(), course_.get(), message_.get()}) t->setCharacterSize(size);
+  figures_->setPosition(osg::Vec3(margin + pad, height - margin - pad, 0));
+  course_->setPosition(osg::Vec3(width - margin - pad, height - margin - pad, 0));
+  message_->setPosition(osg::Vec3(width / 2.0f, margin + pad, 0));
+
+  osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+  addRect(*v, margin, height - margin - 2 * pad - kFigureLines * lineHeight, margin + 2 * pad + kFigureColumns * charWidth,
+          height - margin);
+  addRect(*v, width - margin - 2 * pad - 18 * charWidth, height - margin - 2 * pad - courseLines_ * lineHeight,
+          width - margin, height - margin);
+  if (showMessage_) {
+    const float half = std::min(0.48f * width, 0.5f * charWidth * float(message_->getText().size()) + pad);
+    addRect(*v, width / 2.0f - half, margin, width / 2.0f + half, margin + 2 * pad + lineHeight);
+  }
+  panels_->setVertexArray(v.get());
+  static_cast<osg::DrawArrays*>(panels_->getPrimitiveSet(0))->setCount(static_cast<GLsizei>(v->size()));
+  panels_->dirtyBound();
+}
+
+}  // namespace bdfcar::render

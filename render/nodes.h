@@ -1,0 +1,40 @@
+// Private to render/: builders of the static parts of the scene graph.
+#pragma once
+
+#include <osg/MatrixTransform>
+#include <osg/Node>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "render/surface_sampler.h"
+#include "terrain/terrain_data.h"
+#include "terrain/terrain_mesh.h"
+
+namespace bdfcar::render {
+
+// Opaque draw order, nearest things first so that llvmpipe's early depth test
+// rejects hidden ground pixels before shading them (fill rate is the cost).
+constexpr int kBinRoadPaint = 1, kBinAsphalt = 2, kBinGround = 3, kBinSky = 9;
+
+// Colours shared by sky, fog and clear colour.
+inline const osg::Vec4 kSkyZenith(0.22f, 0.43f, 0.78f, 1.0f);
+inline const osg::Vec4 kSkyHorizon(0.74f, 0.83f, 0.93f, 1.0f);
+
+// Gradient sky dome (radius 1000 m) drawn behind everything; move it to the eye each frame.
+osg::ref_ptr<osg::MatrixTransform> makeSkyDome();
+
+// The terrain triangles with a grass texture (one texture repeat every 5 m).
+osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh);
+
+// Asphalt road along world x with edge lines and dashed lane lines, draped on the terrain.
+osg::ref_ptr<osg::Node> makeRoadNode(const terrain::RoadMarkings& road, const SurfaceSampler& ground);
+
+// Traffic cones standing on the terrain at the given ground points.
+osg::ref_ptr<osg::Node> makeConesNode(const std::vector<Eigen::Vector3d>& cones, const SurfaceSampler& ground);
+
+// Soft dark ellipse to lay under the car (length x width, m), in the xy plane.
+osg::ref_ptr<osg::Node> makeShadowNode(double length, double width);
+
+}  // namespace bdfcar::render

@@ -1,0 +1,68 @@
+#include "render/png_queue.h"
+
+#include "render/png_writer.h"
+
+namespace bdfcar::render {
+
+PngQueue::PngQueue(int compressionLevel, int maxPending)
+    : level_(compressionLevel), maxPending_(maxPending < 1 ? 1 : maxPending), worker_([this] { run(); }) {}
+
+PngQueue::~PngQueue() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  worker_.join();
+}
+
+// Queues one frame; blocks while the queue is full.
+void PngQueue::push(std::string path, Frame frame) {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return static_cast<int>(jobs_.size()) < maxPending_; });
+  jobs_.push_back({std::move(path), std::move(frame)});
+  changed_.notify_all();
+}
+
+// Waits for an empty queue and an idle worker; rethrows the first error.
+void PngQueue::flush() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return jobs_.empty() && !busy_; });
+  if (!error_.empty()) {
+    std::string e = std::move(error_);
+    error_.clear();
+    throw RenderError(e);
+  }
+}
+
+int PngQueue::written() const {
+  std::lock_guard lock(mutex_);
+  return written_;
+}
+
+// Worker loop: encode outside the lock so push() never waits for zlib.
+void PngQueue::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return !jobs_.empty() || stopping_; });
+    if (jobs_.empty()) return;  // stopping and drained
+    Job job = std::move(jobs_.front());
+    jobs_.pop_front();
+    busy_ = true;
+    changed_.notify_all();
+    lock.unlock();
+    std::string failure;
+    try {
+      writePng(job.path, job.frame, level_);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    lock.lock();
+    busy_ = false;
+    if (failure.empty()) ++written_;
+    else if (error_.empty()) error_ = failure;
+    changed_.notify_all();
+  }
+}
+
+}  // namespace bdfcar::render

@@ -1,0 +1,61 @@
+#include "render/video_pipe.h"
+
+#include <sys/wait.h>
+
+#include <csignal>
+#include <cstdlib>
+
+namespace bdfcar::render {
+namespace {
+
+// Wraps an argument in single quotes for /bin/sh.
+std::string shellQuote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+}  // namespace
+
+VideoPipe::VideoPipe(const std::string& path, int width, int height, const VideoOptions& options)
+    : path_(path), width_(width), height_(height) {
+  if (width <= 0 || height <= 0) throw RenderError("VideoPipe: bad frame size");
+  const std::string probe = "command -v " + shellQuote(options.ffmpeg) + " >/dev/null 2>&1";
+  if (std::system(probe.c_str()) != 0)
+    throw RenderError("VideoPipe: '" + options.ffmpeg + "' not found on PATH (install ffmpeg to write " + path + ")");
+  // yuv420p needs even sizes: pad odd ones by a pixel rather than fail.
+  const std::string cmd = shellQuote(options.ffmpeg) + " -y -loglevel error -f rawvideo -pix_fmt rgba -s " +
+                          std::to_string(width) + "x" + std::to_string(height) + " -r " + std::to_string(options.fps) +
+                          " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset veryfast -crf " +
+                          std::to_string(options.crf) + " -pix_fmt yuv420p " + shellQuote(path);
+  // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  pipe_ = popen(cmd.c_str(), "w");
+  if (!pipe_) throw RenderError("VideoPipe: cannot start ffmpeg for " + path);
+}
+
+VideoPipe::~VideoPipe() {
+  if (pipe_) pclose(pipe_);
+}
+
+// Writes one raw RGBA frame to ffmpeg's stdin.
+void VideoPipe::write(const Frame& frame) {
+  if (!pipe_) throw RenderError("VideoPipe: write after close (" + path_ + ")");
+  if (frame.width != width_ || frame.height != height_)
+    throw RenderError("VideoPipe: frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                      " differs from the video's " + std::to_string(width_) + "x" + std::to_string(height_));
+  if (std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), pipe_) != frame.rgba.size())
+    throw RenderError("VideoPipe: ffmpeg stopped accepting frames for " + path_);
+  ++frames_;
+}
+
+// Closes stdin and checks ffmpeg's exit status.
+void VideoPipe::close() {
+  if (!pipe_) return;
+  const int status = pclose(pipe_);
+  pipe_ = nullptr;
+  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw RenderError("VideoPipe: ffmpeg failed writing " + path_ + " (exit status " + std::to_string(status) + ")");
+}
+
+}  // namespace bdfcar::render

@@ -1,0 +1,39 @@
+// A video file from frames: raw RGBA frames piped into an ffmpeg process.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "render/frame.h"
+
+namespace bdfcar::render {
+
+struct VideoOptions {
+  double fps = 50.0;
+  int crf = 20;                       // x264 quality (lower = better, larger)
+  std::string ffmpeg = "ffmpeg";      // executable, looked up on PATH
+};
+
+class VideoPipe {
+ public:
+  // Starts ffmpeg writing `path` (container from the extension, e.g. .mp4);
+  // throws RenderError if ffmpeg cannot be found or started.
+  VideoPipe(const std::string& path, int width, int height, const VideoOptions& options = {});
+  ~VideoPipe();  // closes the pipe (errors are dropped: call close() to see them)
+  VideoPipe(const VideoPipe&) = delete;
+  VideoPipe& operator=(const VideoPipe&) = delete;
+
+  // Sends one frame (must have the size given at construction).
+  void write(const Frame& frame);
+  // Ends the stream and waits for ffmpeg; throws if it failed.
+  void close();
+  int frames() const { return frames_; }
+
+ private:
+  std::string path_;
+  int width_, height_;
+  int frames_ = 0;
+  FILE* pipe_ = nullptr;
+};
+
+}  // namespace bdfcar::render

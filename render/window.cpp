@@ -1,0 +1,136 @@
+#include "render/window.h"
+
+#include <GL/gl.h>
+#include <SDL.h>
+
+#include "render/embedded_viewer.h"
+#include "render/gl_check.h"
+#include "render/png_writer.h"
+
+namespace bdfcar::render {
+
+struct Window::Impl {
+  explicit Impl(Scene::Impl& s) : scene(s) {}
+  Scene::Impl& scene;
+  SDL_Window* window = nullptr;
+  SDL_GLContext context = nullptr;
+  osg::ref_ptr<osgViewer::Viewer> viewer;
+  std::string renderer, screenshotPath;
+  int width = 0, height = 0;
+};
+
+namespace {
+
+// Sets the GL attributes SDL uses for the next window's context.
+void requestContext(int samples) {
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_COMPATIBILITY);
+  SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+  SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
+  SDL_GL_SetAttribute(SDL_GL_STENCIL_SIZE, 8);
+  SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, samples > 1 ? 1 : 0);
+  SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, samples > 1 ? samples : 0);
+}
+
+// RGBA picture of the back buffer, top row first.
+Frame readBackBuffer(int width, int height) {
+  Frame f = makeFrame(width, height);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, f.rgba.data());
+  flipRows(f);
+  return f;
+}
+
+}  // namespace
+
+// Window, context (MSAA if available, else none), vsync, viewer.
+Window::Window(Scene& scene, const WindowOptions& options) : impl_(std::make_unique<Impl>(scene.impl())) {
+  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0)
+    throw RenderError(std::string("SDL2: cannot initialise video: ") + SDL_GetError());
+  Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
+  if (options.fullscreen) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
+  for (int samples : {options.multisample, 0}) {
+    requestContext(samples);
+    impl_->window = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                                     options.width, options.height, flags);
+    if (impl_->window) impl_->context = SDL_GL_CreateContext(impl_->window);
+    if (impl_->context) break;
+    if (impl_->window) SDL_DestroyWindow(impl_->window);
+    impl_->window = nullptr;
+    if (samples == 0) break;
+  }
+  if (!impl_->context) {
+    const std::string error = SDL_GetError();
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    throw RenderError("SDL2: cannot create an OpenGL compatibility window: " + error);
+  }
+  SDL_GL_MakeCurrent(impl_->window, impl_->context);
+  SDL_GL_SetSwapInterval(options.vsync ? 1 : 0);
+  try {
+    const auto* r = glGetString(GL_RENDERER);
+    requireGlContext(r, "SDL2 window");
+    impl_->renderer = reinterpret_cast<const char*>(r);
+    SDL_GL_GetDrawableSize(impl_->window, &impl_->width, &impl_->height);
+    impl_->viewer = makeEmbeddedViewer(impl_->scene, impl_->width, impl_->height);
+  } catch (...) {
+    SDL_GL_DeleteContext(impl_->context);
+    SDL_DestroyWindow(impl_->window);
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    throw;
+  }
+}
+
+Window::~Window() {
+  SDL_GL_MakeCurrent(impl_->window, impl_->context);
+  releaseViewer(*impl_->viewer);
+  impl_->viewer = nullptr;
+  SDL_GL_DeleteContext(impl_->context);
+  SDL_DestroyWindow(impl_->window);
+  SDL_QuitSubSystem(SDL_INIT_VIDEO);
+}
+
+// Draws at the current drawable size (the window may have been resized), reads back if asked, swaps.
+void Window::releaseContext() { SDL_GL_MakeCurrent(impl_->window, nullptr); }
+
+WindowEvents Window::takeEvents() {
+  WindowEvents w;
+  SDL_Event e[32];
+  int n;
+  while ((n = SDL_PeepEvents(e, 32, SDL_GETEVENT, SDL_QUIT, SDL_QUIT)) > 0) w.quit = true;
+  while ((n = SDL_PeepEvents(e, 32, SDL_GETEVENT, SDL_WINDOWEVENT, SDL_SYSWMEVENT)) > 0)
+    for (int i = 0; i < n; ++i)
+      if (e[i].type == SDL_WINDOWEVENT && e[i].window.event == SDL_WINDOWEVENT_CLOSE) w.quit = true;
+  while ((n = SDL_PeepEvents(e, 32, SDL_GETEVENT, SDL_MOUSEMOTION, SDL_MOUSEWHEEL)) > 0)
+    for (int i = 0; i < n; ++i) {
+      if (e[i].type == SDL_MOUSEMOTION && (e[i].motion.state & SDL_BUTTON_LMASK)) {
+        w.dragX += e[i].motion.xrel;
+        w.dragY += e[i].motion.yrel;
+      }
+      if (e[i].type == SDL_MOUSEWHEEL) w.wheel += e[i].wheel.y;
+    }
+  return w;
+}
+
+void Window::present(Frame* capture) {
+  SDL_GL_MakeCurrent(impl_->window, impl_->context);
+  SDL_GL_GetDrawableSize(impl_->window, &impl_->width, &impl_->height);
+  drawFrame(*impl_->viewer, impl_->scene, impl_->width, impl_->height);
+  if (capture || !impl_->screenshotPath.empty()) {
+    Frame f = readBackBuffer(impl_->width, impl_->height);
+    requireNotBlack(f, "SDL2 window");
+    if (!impl_->screenshotPath.empty()) {
+      writePng(impl_->screenshotPath, f);
+      impl_->screenshotPath.clear();
+    }
+    if (capture) *capture = std::move(f);
+  }
+  SDL_GL_SwapWindow(impl_->window);
+}
+
+void Window::screenshotNextFrame(const std::string& pngPath) { impl_->screenshotPath = pngPath; }
+int Window::width() const { return impl_->width; }
+int Window::height() const { return impl_->height; }
+const std::string& Window::glRenderer() const { return impl_->renderer; }
+void Window::setTitle(const std::string& title) { SDL_SetWindowTitle(impl_->window, title.c_str()); }
+
+}  // namespace bdfcar::render
