@@ -33,6 +33,13 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
               spec.name.c_str(), r.steps, spec.integrator.step, c.newtonIterations, c.jacobians, c.factorizations,
               c.refreshes, c.rescues, c.splits, perStepUs,
               r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
+  if (r.course) {
+    const auto& cr = *r.course;
+    std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
+                cr.passed ? "passed" : "FAILED", cr.coneHits, cr.coneHits == 1 ? "" : "s", cr.peakLateralAcceleration,
+                cr.peakLateralAcceleration / 9.81, cr.exitTime < 0 ? " (course not completed)" : "");
+    return cr.passed && cr.exitTime >= 0 ? 0 : 4;
+  }
   return 0;
 }
 

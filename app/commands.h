@@ -17,5 +17,12 @@ using CommandList = std::vector<Command>;
 void addVersionCommand(CLI::App& app, CommandList& commands);
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
+// bdfcar (on screen):
+void addDriveCommand(CLI::App& app, CommandList& commands);
+void addDemoCommand(CLI::App& app, CommandList& commands);
+void addRenderDelegateCommand(CLI::App& app, CommandList& commands);
+void addInputCommand(CLI::App& app, CommandList& commands);
+// bdfcar-headless:
+void addHeadlessCommands(CLI::App& app, CommandList& commands);
 
 }  // namespace bdfcar::app

@@ -3,18 +3,27 @@
 #include <cstdio>
 
 #include "commands.h"
+#include "process.h"
 
 int main(int argc, char** argv) {
   using namespace bdfcar::app;
+  setProcessArguments(argc, argv);
   CLI::App app{"bdfcar: real-time vehicle simulation with an implicit BDF multibody model"};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
   app.fallthrough(false);
   CommandList commands;
   addVersionCommand(app, commands);
   addInfoCommand(app, commands);
   addRunCommand(app, commands);
+#ifdef BDFCAR_WITH_GRAPHICS
+  addDriveCommand(app, commands);
+  addDemoCommand(app, commands);
+  addRenderDelegateCommand(app, commands);
+  addInputCommand(app, commands);
+#endif
   CLI11_PARSE(app, argc, argv);
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();
+  std::fprintf(stderr, "%s\nerror: name a command (see above)\n", app.help().c_str());
   return 2;
 }

@@ -11,6 +11,7 @@ bool& actionFlag(Controls& controls, Action action) {
     case Action::Pause: return controls.pause;
     case Action::SingleStep: return controls.singleStep;
     case Action::Camera: return controls.camera;
+    case Action::View: return controls.view;
     case Action::Record: return controls.record;
     case Action::Quit: return controls.quit;
   }
@@ -25,7 +26,7 @@ bool actionFlag(const Controls& controls, Action action) {
 // Mapping-file names, in enum order.
 constexpr std::string_view kAxisNames[kAxisCount] = {"steering", "throttle", "brake", "clutch"};
 constexpr std::string_view kActionNames[kActionCount] = {"gear_up", "gear_down", "reset",  "pause",
-                                                         "single_step", "camera", "record", "quit"};
+                                                         "single_step", "camera", "view", "record", "quit"};
 constexpr std::string_view kDeviceKindNames[] = {"keyboard", "wheel", "gamecontroller", "joystick"};
 
 // Mapping-file name of an analog control.

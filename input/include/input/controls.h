@@ -15,8 +15,8 @@ enum class Axis { Steering, Throttle, Brake, Clutch };
 inline constexpr int kAxisCount = 4;
 
 // Edge-triggered commands: true in the one tick in which the button went down.
-enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, Record, Quit };
-inline constexpr int kActionCount = 8;
+enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit };
+inline constexpr int kActionCount = 9;
 
 struct Controls {
   // Analog, from the active device (the highest-ranked connected one, else the keyboard).
@@ -33,6 +33,7 @@ struct Controls {
   bool pause = false;
   bool singleStep = false;
   bool camera = false;
+  bool view = false;      // switch the body display (solid, translucent, hidden: the suspension moving)
   bool record = false;
   bool quit = false;
 

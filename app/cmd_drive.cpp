@@ -1,0 +1,78 @@
+// `bdfcar drive [SCENARIO]`: drive with a wheel, game controller, joystick or
+// the keyboard in a window; record the inputs, replay them (in the window or
+// as a batch run) bit for bit.
+#include <cstdio>
+#include <memory>
+
+#include "cli_errors.h"
+#include "commands.h"
+#include "demo_common.h"
+#include "interactive/drive_loop.h"
+#include "scenario_overrides.h"
+
+namespace bdfcar::app {
+
+namespace {
+
+struct DriveArgs {
+  std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive.toml";
+  std::string record, replay, telemetry, screenshot, size = "1280x720";
+  double seconds = 0;
+  bool batch = false, noVsync = false;
+  ScenarioOverrides overrides;
+};
+
+int runDrive(const DriveArgs& a) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(a.scenario);
+  applyOverrides(a.overrides, spec);
+  std::unique_ptr<Recording> replay;
+  if (!a.replay.empty()) replay = std::make_unique<Recording>(readRecording(a.replay));
+  SessionOptions so;
+  so.telemetryPath = a.telemetry;
+  so.recordPath = a.record;
+  DriveSession session(spec, so);
+  if (replay && a.batch) {
+    // As fast as possible, no window: the same inputs give the same bits.
+    for (const scenario::DriverInput& in : replay->inputs)
+      if (!session.tick(in)) break;
+  } else {
+    InteractiveOptions io;
+    io.driver = replay ? DriverSource::Replay : DriverSource::Person;
+    io.replay = replay.get();
+    io.seconds = a.seconds;
+    io.vsync = !a.noVsync;
+    io.screenshot = a.screenshot;
+    if (!parseSize(a.size, io.width, io.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT");
+    const LoopStats stats = runInteractive(session, io);
+    std::printf("%s\n", stats.summary().c_str());
+  }
+  if (const auto c = session.courseResult())
+    std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course", c->coneHits,
+                c->coneHits == 1 ? "" : "s", c->exitTime >= 0 ? c->exitTime - c->entryTime : -1.0);
+  if (session.failed()) {
+    std::fprintf(stderr, "error: %s\n", session.failure().c_str());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addDriveCommand(CLI::App& app, CommandList& commands) {
+  CLI::App* cmd = app.add_subcommand("drive", "Drive a scenario in a window with a wheel, controller, joystick or keyboard");
+  auto a = std::make_shared<DriveArgs>();
+  cmd->add_option("scenario", a->scenario, "Scenario file (default: the ISO course on the flat road)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--record", a->record, "Record the inputs of every tick to this file");
+  cmd->add_option("--replay", a->replay, "Replay recorded inputs instead of the devices")->check(CLI::ExistingFile);
+  cmd->add_flag("--batch", a->batch, "With --replay: no window, as fast as possible");
+  cmd->add_option("--telemetry", a->telemetry, "Write telemetry CSV while driving");
+  cmd->add_option("--seconds", a->seconds, "Stop after this much wall time")->check(CLI::Range(0.0, 1e6));
+  cmd->add_option("--size", a->size, "Window size, e.g. 1280x720");
+  cmd->add_flag("--no-vsync", a->noVsync, "Do not wait for the display's refresh");
+  cmd->add_option("--screenshot", a->screenshot, "Save the last frame as PNG");
+  addOverrideOptions(*cmd, a->overrides);
+  commands.push_back({cmd, [a] { return reportErrors([&] { return runDrive(*a); }); }});
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,54 @@
+#include "demo_common.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "session/plots.h"
+
+namespace bdfcar::app {
+
+bool parseSize(const std::string& text, int& w, int& h) {
+  return std::sscanf(text.c_str(), "%dx%d", &w, &h) == 2 && w >= 16 && h >= 16 && w <= 7680 && h <= 4320;
+}
+
+void addDemoOptions(CLI::App& cmd, DemoOptions& o) {
+  cmd.add_option("--scenario", o.scenario, "Scenario to demonstrate")->check(CLI::ExistingFile);
+  cmd.add_option("--out,-o", o.outDir, "Output folder (telemetry, plots, frames, video)");
+  cmd.add_option("--fps", o.fps, "Frames per second of the headless frames")->check(CLI::Range(1.0, 240.0));
+  cmd.add_option_function<std::string>(
+      "--size",
+      [&o](const std::string& s) {
+        if (!parseSize(s, o.width, o.height)) throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 1280x720");
+      },
+      "Frame size, e.g. 1280x720");
+}
+
+std::string demoTelemetryPath(const DemoOptions& o) {
+  std::filesystem::create_directories(o.outDir);
+  return (std::filesystem::path(o.outDir) / "telemetry.csv").string();
+}
+
+int finishDemo(DriveSession& session, const DemoOptions& o) {
+  const std::string telemetry = demoTelemetryPath(o);
+  const std::string why = plotDrive(telemetry, o.outDir, session.simulation().course(), session.spec().name);
+  if (!why.empty()) std::fprintf(stderr, "note: %s\n", why.c_str());
+  std::printf("telemetry: %s\n", telemetry.c_str());
+  if (why.empty())
+    std::printf("plots: %s/path.png, %s/lateral_acceleration.png\n", o.outDir.c_str(), o.outDir.c_str());
+  if (session.failed()) {
+    std::fprintf(stderr, "error: %s\n", session.failure().c_str());
+    return 3;
+  }
+  if (const auto c = session.courseResult()) {
+    const bool done = c->exitTime >= 0;
+    std::printf("ISO 3888-1 double lane change at %.0f km/h: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 "
+                "(%.2f g)%s\n",
+                session.spec().speedControl.target * 3.6, c->passed && done ? "PASSED" : "FAILED", c->coneHits,
+                c->coneHits == 1 ? "" : "s", c->peakLateralAcceleration, c->peakLateralAcceleration / 9.81,
+                done ? "" : " (course not completed)");
+    return c->passed && done ? 0 : 4;
+  }
+  return 0;
+}
+
+}  // namespace bdfcar::app

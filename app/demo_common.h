@@ -1,0 +1,30 @@
+// The demo (the README's main job): the ISO 3888-1 double lane change driven
+// by the path follower, with telemetry, plots and the course verdict,
+// on screen (bdfcar) or as frames and a video (bdfcar-headless).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "session/drive_session.h"
+
+namespace bdfcar::app {
+
+struct DemoOptions {
+  std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/iso_lane_change.toml";
+  std::string outDir = "out/demo";
+  bool headless = false;   // bdfcar: render headless even with a display
+  double fps = 30;
+  int width = 1280, height = 720;
+};
+
+void addDemoOptions(CLI::App& cmd, DemoOptions& o);
+// Telemetry path inside the output folder.
+std::string demoTelemetryPath(const DemoOptions& o);
+// After the run: plots, the verdict on the console; exit code (0 passed,
+// 4 course failed, 3 diverged).
+int finishDemo(DriveSession& session, const DemoOptions& o);
+// Parses "1280x720".
+bool parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace bdfcar::app

@@ -1,0 +1,99 @@
+// bdfcar-headless's commands: `render SCENARIO --out DIR` and `demo`
+// (OSMesa, no display server).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "cli_errors.h"
+#include "commands.h"
+#include "demo_common.h"
+#include "headless/frames.h"
+#include "scenario_overrides.h"
+
+namespace bdfcar::app {
+
+namespace {
+
+bool ffmpegAvailable() { return std::system("command -v ffmpeg > /dev/null 2>&1") == 0; }
+
+void printFrameStats(const FramesResult& r) {
+  const Percentiles rp = r.stats.render();
+  std::printf("%d frames (%s): render p50 %.1f ms, p99 %.1f ms; PNG/video output waited %.2f s in all\n", r.frames,
+              r.renderer.c_str(), 1e3 * rp.p50, 1e3 * rp.p99, r.encodeSeconds);
+}
+
+struct RenderArgs {
+  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry;
+  double fps = 30;
+  ScenarioOverrides overrides;
+};
+
+int runRender(const RenderArgs& a) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(a.scenario);
+  applyOverrides(a.overrides, spec);
+  FramesOptions fo;
+  fo.outDir = a.outDir;
+  fo.video = a.video;
+  fo.fps = a.fps;
+  fo.camera = a.camera;
+  if (!parseSize(a.size, fo.width, fo.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT, e.g. 1280x720");
+  SessionOptions so;
+  so.telemetryPath = a.telemetry;
+  DriveSession session(spec, so);
+  const FramesResult r = renderFrames(session, fo);
+  printFrameStats(r);
+  if (session.failed()) {
+    std::fprintf(stderr, "error: %s\n", session.failure().c_str());
+    return 3;
+  }
+  return 0;
+}
+
+int runHeadlessDemo(const DemoOptions& o) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(o.scenario);
+  SessionOptions so;
+  so.telemetryPath = demoTelemetryPath(o);
+  DriveSession session(spec, so);
+  FramesOptions fo;
+  fo.outDir = (std::filesystem::path(o.outDir) / "frames").string();
+  fo.fps = o.fps;
+  fo.width = o.width;
+  fo.height = o.height;
+  if (ffmpegAvailable())
+    fo.video = (std::filesystem::path(o.outDir) / "demo.mp4").string();
+  else
+    std::fprintf(stderr, "note: ffmpeg is not installed: frames only, no video\n");
+  const FramesResult r = renderFrames(session, fo);
+  printFrameStats(r);
+  std::printf("frames: %s/frame_*.png\n", fo.outDir.c_str());
+  if (!fo.video.empty()) std::printf("video: %s\n", fo.video.c_str());
+  return finishDemo(session, o);
+}
+
+}  // namespace
+
+void addHeadlessCommands(CLI::App& app, CommandList& commands) {
+  {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scenario to PNG frames (and a video) with OSMesa");
+    auto a = std::make_shared<RenderArgs>();
+    cmd->add_option("scenario", a->scenario, "Scenario file")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--out,-o", a->outDir, "Folder for frame_NNNNN.png")->required();
+    cmd->add_option("--fps", a->fps, "Frames per second of simulated time")->check(CLI::Range(1.0, 240.0));
+    cmd->add_option("--size", a->size, "Frame size, e.g. 1280x720");
+    cmd->add_option("--video", a->video, "Also write a video (through ffmpeg), e.g. run.mp4");
+    cmd->add_option("--camera", a->camera, "chase, hood, orbit or top-down")
+        ->check(CLI::IsMember({"chase", "hood", "orbit", "top-down"}));
+    cmd->add_option("--telemetry", a->telemetry, "Also write the telemetry CSV");
+    addOverrideOptions(*cmd, a->overrides);
+    commands.push_back({cmd, [a] { return reportErrors([&] { return runRender(*a); }); }});
+  }
+  {
+    CLI::App* cmd = app.add_subcommand("demo", "The ISO 3888-1 lane change demo as frames, video, telemetry and plots");
+    auto o = std::make_shared<DemoOptions>();
+    addDemoOptions(*cmd, *o);
+    cmd->add_flag("--headless", o->headless, "(always headless here)");
+    commands.push_back({cmd, [o] { return reportErrors([&] { return runHeadlessDemo(*o); }); }});
+  }
+}
+
+}  // namespace bdfcar::app

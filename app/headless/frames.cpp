@@ -1,0 +1,79 @@
+#include "headless/frames.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "render/headless.h"
+#include "render/png_queue.h"
+#include "render/video_pipe.h"
+#include "view/scene_setup.h"
+
+namespace bdfcar::app {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+render::CameraMode cameraMode(const std::string& name) {
+  if (name == "hood") return render::CameraMode::Hood;
+  if (name == "orbit") return render::CameraMode::Orbit;
+  if (name == "top-down") return render::CameraMode::TopDown;
+  return render::CameraMode::Chase;
+}
+}  // namespace
+
+FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
+  FramesResult r;
+  render::Scene scene(sceneConfigFor(session));
+  for (const std::string& w : scene.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  scene.setCamera(cameraMode(opt.camera));
+  render::HeadlessRenderer renderer(scene, opt.width, opt.height);
+  r.renderer = renderer.glRenderer();
+  if (!opt.outDir.empty()) std::filesystem::create_directories(opt.outDir);
+  std::unique_ptr<render::PngQueue> pngs;
+  if (!opt.outDir.empty()) pngs = std::make_unique<render::PngQueue>();
+  std::unique_ptr<render::VideoPipe> video;
+  if (!opt.video.empty()) video = std::make_unique<render::VideoPipe>(opt.video, opt.width, opt.height);
+
+  const double frameDt = 1.0 / opt.fps;
+  const auto wall0 = Clock::now();
+  const double sim0 = session.time();
+  double lastStep = 0;
+  double nextFrame = 0.0;  // manoeuvre time of the next frame
+  const double h = session.spec().integrator.step;
+  while (true) {
+    if (session.time() >= nextFrame - 0.5 * h) {
+      const auto t0 = Clock::now();
+      const vehicle::VehicleView view = session.view();
+      const double wall = seconds(t0 - wall0);
+      scene.update(view, session.hud(wall > 0 ? (session.time() - sim0) / wall : 0.0, lastStep, ""));
+      const render::Frame& f = renderer.render();
+      r.stats.frame(seconds(Clock::now() - t0));
+      const auto t1 = Clock::now();
+      if (pngs) {
+        char name[64];
+        std::snprintf(name, sizeof name, "frame_%05d.png", r.frames);
+        pngs->push((std::filesystem::path(opt.outDir) / name).string(), f);
+      }
+      if (video) video->write(f);
+      r.encodeSeconds += seconds(Clock::now() - t1);
+      ++r.frames;
+      nextFrame += frameDt;
+    }
+    if (session.finished() || session.failed()) break;
+    const auto t0 = Clock::now();
+    session.tick(std::nullopt);
+    lastStep = seconds(Clock::now() - t0);
+    r.stats.tick(0, lastStep, false);
+  }
+  const auto t1 = Clock::now();
+  if (pngs) pngs->flush();
+  if (video) video->close();
+  r.encodeSeconds += seconds(Clock::now() - t1);
+  return r;
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,31 @@
+// Headless rendering of a drive (OSMesa, no display server): steps the
+// drive and renders a frame every 1/fps seconds of simulated time, written
+// as PNG (on a worker thread) and/or into a video through ffmpeg.
+#pragma once
+
+#include <string>
+
+#include "session/drive_session.h"
+#include "session/loop_stats.h"
+
+namespace bdfcar::app {
+
+struct FramesOptions {
+  std::string outDir;        // frames go to outDir/frame_00000.png, ...; empty: no PNG
+  std::string video;         // .mp4 through ffmpeg; empty: none
+  double fps = 30;
+  int width = 1280, height = 720;
+  std::string camera = "chase";  // chase, hood, orbit, top-down
+};
+
+struct FramesResult {
+  int frames = 0;
+  LoopStats stats;           // render time per frame (frame()), physics per tick (tick())
+  double encodeSeconds = 0;  // waiting for PNG / video output
+  std::string renderer;      // GL_RENDERER
+};
+
+// Renders the whole scenario (until its duration or a failure).
+FramesResult renderFrames(DriveSession& session, const FramesOptions& options);
+
+}  // namespace bdfcar::app

@@ -1,0 +1,38 @@
+#include "session/loop_stats.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace bdfcar::app {
+
+Percentiles percentiles(std::vector<double> v) {
+  Percentiles p;
+  if (v.empty()) return p;
+  std::sort(v.begin(), v.end());
+  auto at = [&](double q) { return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))]; };
+  p.p50 = at(0.5);
+  p.p99 = at(0.99);
+  p.max = v.back();
+  return p;
+}
+
+void LoopStats::tick(double period, double physicsSeconds, bool overrun) {
+  if (period > 0) periods_.push_back(period);
+  physics_.push_back(physicsSeconds);
+  overruns_ += overrun ? 1 : 0;
+}
+
+void LoopStats::frame(double renderSeconds) { render_.push_back(renderSeconds); }
+
+std::string LoopStats::summary() const {
+  const Percentiles t = tickPeriod(), ph = physics(), r = render();
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "loop: %ld ticks, tick period p50 %.3f ms, p99 %.3f ms, max %.3f ms, %ld overruns\n"
+                "      physics per tick p50 %.1f us, p99 %.1f us; render per frame p50 %.2f ms, p99 %.2f ms (%zu frames)",
+                ticks(), 1e3 * t.p50, 1e3 * t.p99, 1e3 * t.max, overruns_, 1e6 * ph.p50, 1e6 * ph.p99, 1e3 * r.p50,
+                1e3 * r.p99, render_.size());
+  return buf;
+}
+
+}  // namespace bdfcar::app

@@ -1,0 +1,24 @@
+#include "view/scene_setup.h"
+
+#include "terrain/terrain_file.h"
+
+namespace bdfcar::app {
+
+render::SceneConfig sceneConfigFor(DriveSession& session, bool hud) {
+  render::SceneConfig cfg;
+  const scenario::ScenarioSpec& spec = session.spec();
+  if (!spec.terrainFile.empty()) {
+    cfg.terrain = terrain::loadTerrain(spec.terrainFile);
+  } else {
+    cfg.terrain.name = "plane";
+    cfg.terrain.road.present = true;
+    cfg.terrain.road.centreY = spec.startY;
+  }
+  cfg.course = session.simulation().course();
+  cfg.geometry = session.simulation().vehicle().spec.geometry;
+  cfg.assetRoot = BDFCAR_ASSET_DIR;
+  cfg.hud = hud;
+  return cfg;
+}
+
+}  // namespace bdfcar::app

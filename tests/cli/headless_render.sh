@@ -1,0 +1,13 @@
+#!/bin/sh
+# `bdfcar render` with no display: handed to bdfcar-headless (OSMesa), it
+# writes frames of the requested size. Usage: headless_render.sh BDFCAR SCENARIO
+set -e
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+env -u DISPLAY -u WAYLAND_DISPLAY "$1" render "$2" --out "$out" --size 320x180 --fps 5 --duration 1
+n=$(ls "$out"/frame_*.png | wc -l)
+[ "$n" -ge 5 ] || { echo "expected at least 5 frames, got $n"; exit 1; }
+# PNG signature and the requested size in the IHDR chunk (width 320 = 0x140, height 180 = 0xb4).
+head -c 24 "$out/frame_00000.png" | od -An -tx1 | tr -d ' \n' | grep -q '^89504e470d0a1a0a0000000d4948445200000140000000b4' \
+  || { echo "frame is not a 320x180 PNG"; exit 1; }
+echo "ok: $n frames"
