@@ -19,6 +19,11 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   std::unique_ptr<TelemetryWriter> writer;
   if (!options.telemetryPath.empty()) writer = std::make_unique<TelemetryWriter>(options.telemetryPath, sim.vehicle());
   const ScenarioSpec& spec = sim.spec();
+  std::optional<CourseJudge> judge;
+  if (sim.course()) {
+    const auto& g = sim.vehicle().spec.geometry;
+    judge.emplace(*sim.course(), g.length, vehicleWidth(sim.vehicle()), g.bodyOffset);
+  }
   const double h = spec.integrator.step;
   const long steps = std::lround(spec.duration / h);
   const long every = std::max(1L, std::lround(spec.outputInterval / h));
@@ -33,6 +38,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
       r.samples.push_back(s);
       r.steerInputs.push_back(ti.steer);
     }
+    if (judge) judge->update(s);
     if (options.onSample) options.onSample(s);
   };
   record();
@@ -52,6 +58,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   }
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   r.simulatedSeconds = r.steps * h;
+  if (judge) r.course = judge->result();
   r.counters = sim.integrator().counters();
   r.timers = sim.integrator().timers();
   return r;

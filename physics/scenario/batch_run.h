@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "scenario/course_judge.h"
 #include "scenario/simulation.h"
 #include "scenario/telemetry.h"
 
@@ -23,6 +26,7 @@ struct RunResult {
   double simulatedSeconds = 0;      // manoeuvre only
   std::vector<vehicle::VehicleSample> samples;  // one per output interval (when kept)
   std::vector<double> steerInputs;  // steering input per sample
+  std::optional<CourseResult> course;  // when the scenario has a course
 };
 
 struct RunOptions {

@@ -38,8 +38,8 @@ std::vector<Eigen::Vector3d> Iso3888Course::cones(double spacing) const {
     const int n = std::max(1, static_cast<int>(std::ceil((l.x1 - l.x0) / spacing)));
     for (int i = 0; i <= n; ++i) {
       const double x = l.x0 + (l.x1 - l.x0) * i / n;
-      out.emplace_back(x, l.centreY + 0.5 * l.width, 0.0);
-      out.emplace_back(x, l.centreY - 0.5 * l.width, 0.0);
+      out.emplace_back(x, l.centreY + 0.5 * l.width + kConeBaseRadius, 0.0);
+      out.emplace_back(x, l.centreY - 0.5 * l.width - kConeBaseRadius, 0.0);
     }
   }
   return out;
@@ -53,6 +53,22 @@ double Iso3888Course::referenceY(double x) const {
   if (x <= b.x1) return b.centreY;
   if (x < e.x0) return blend(b.centreY, e.centreY, (x - b.x1) / (e.x0 - b.x1));
   return e.centreY;
+}
+
+double Iso3888Course::drivingLineY(double x, double carWidth, double marginUse) const {
+  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - std::cos(std::numbers::pi * s)); };
+  const CourseLane &a = lanes[0], &b = lanes[1], &e = lanes[2];
+  auto spare = [&](const CourseLane& l) { return marginUse * std::max(0.0, 0.5 * (l.width - carWidth)); };
+  const double side = b.centreY > a.centreY ? 1.0 : -1.0;  // the side lane lies to this side
+  // Lane positions: towards the next lane on entry and exit of the side lane.
+  const double yA = a.centreY + side * spare(a);
+  const double yB1 = b.centreY - side * spare(b), yB2 = b.centreY - side * spare(b);
+  const double yE = e.centreY + side * spare(e);
+  if (x <= a.x1) return yA;
+  if (x < b.x0) return blend(yA, yB1, (x - a.x1) / (b.x0 - a.x1));
+  if (x <= b.x1) return yB2;
+  if (x < e.x0) return blend(yB2, yE, (x - b.x1) / (e.x0 - b.x1));
+  return yE;
 }
 
 }  // namespace bdfcar::scenario

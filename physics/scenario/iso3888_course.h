@@ -14,6 +14,10 @@
 
 namespace bdfcar::scenario {
 
+// Base radius of a course cone, m. The lane limits are tangent to the cones'
+// bases (ISO 3888): cone centres sit this far outside the lane.
+constexpr double kConeBaseRadius = 0.15;
+
 struct CourseLane {
   double x0 = 0, x1 = 0;   // extent along x, m
   double centreY = 0;      // m
@@ -29,11 +33,16 @@ struct Iso3888Course {
   const CourseLane* laneAt(double x) const;
   // True if the point is inside the course (always true in sections 2 and 4).
   bool contains(double x, double y) const;
-  // Cone positions (ground level) along both boundaries of the three lanes,
-  // spaced at most `spacing` m apart.
+  // Cone positions (ground level) along both limits of the three lanes,
+  // spaced at most `spacing` m apart, kConeBaseRadius outside the limits.
   std::vector<Eigen::Vector3d> cones(double spacing = 2.5) const;
   // A smooth reference centreline y(x) through the lane centres (cosine blends over sections 2 and 4).
   double referenceY(double x) const;
+  // A driving line for a car `carWidth` wide: straight through each lane,
+  // using `marginUse` (0..1) of the lane's spare width on the side the next
+  // lane lies, with cosine transitions over sections 2 and 4 (flat at the
+  // lane ends, so the car's corners follow the line into the next lane).
+  double drivingLineY(double x, double carWidth, double marginUse) const;
 };
 
 Iso3888Course makeIso3888Course(double vehicleWidth, double startX = 0.0, double centreY = 0.0);

@@ -5,16 +5,24 @@
 
 namespace bdfcar::scenario {
 
-double PathFollower::steer(double x, double y, double yaw, double v) const {
+double PathFollower::steer(double x, double y, double yaw, double v, double yawRate, double dt) {
+  // Learn the understeer from how much curvature the last command produced,
+  // only while turning clearly (small curvatures say nothing).
+  const double obtained = std::abs(v) > 1.0 ? yawRate / v : 0.0;
+  if (std::abs(lastCurvature_) > 2e-3 && std::abs(obtained) > 1e-3 && lastCurvature_ * obtained > 0) {
+    const double ratio = std::clamp(lastCurvature_ / obtained, 0.5, 4.0);
+    const double a = std::clamp(dt / p_.learningTime, 0.0, 1.0);
+    gain_ += a * (ratio - gain_);
+  }
   const double L = std::max(p_.minLookAhead, p_.lookAheadTime * std::abs(v));
   // Target on the path L ahead along x (the course runs along +x).
   const double tx = x + L * std::cos(yaw), ty = path_(tx);
   // Pure pursuit: curvature 2 sin(eta) / L with eta the angle to the target in the vehicle frame.
   const double dx = tx - x, dy = ty - y;
   const double eta = std::atan2(dy, dx) - yaw;
-  const double dist = std::hypot(dx, dy);
-  const double curvature = 2.0 * std::sin(eta) / dist;
-  const double roadWheel = std::atan(p_.wheelbase * curvature);
+  const double curvature = 2.0 * std::sin(eta) / std::hypot(dx, dy);
+  lastCurvature_ = curvature;
+  const double roadWheel = std::atan(p_.wheelbase * curvature * gain_);
   return std::clamp(roadWheel * p_.steerPerRoadWheel, -1.0, 1.0);
 }
 

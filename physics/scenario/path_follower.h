@@ -1,6 +1,9 @@
-// A look-ahead path follower: steers toward the point of a reference path
-// y(x) a look-ahead distance ahead of the vehicle (pure pursuit on the
-// kinematic bicycle), the speed is held by the PI controller separately.
+// A look-ahead path follower, as a driver would steer: pure pursuit toward
+// the point of the reference path a look-ahead distance ahead (kinematic
+// bicycle curvature), scaled by the car's understeer, which the driver
+// learns while driving: the ratio of the curvature asked for to the
+// curvature obtained (yaw rate / speed), low-pass filtered. The speed is
+// held by the PI controller separately.
 #pragma once
 
 #include <functional>
@@ -8,21 +11,26 @@
 namespace bdfcar::scenario {
 
 struct PathFollowerParams {
-  double lookAheadTime = 0.9;  // s
-  double minLookAhead = 5.0;   // m
-  double wheelbase = 2.46;     // m
+  double lookAheadTime = 0.9;      // s
+  double minLookAhead = 5.0;       // m
+  double wheelbase = 2.46;         // m
   double steerPerRoadWheel = 1.0;  // normalised steering per rad of road-wheel angle
+  double learningTime = 0.5;       // s, time constant of the understeer estimate
 };
 
 class PathFollower {
  public:
   PathFollower(const PathFollowerParams& p, std::function<double(double)> pathY) : p_(p), path_(std::move(pathY)) {}
-  // Normalised steering [-1, 1] for a vehicle at (x, y) with heading yaw and speed v.
-  double steer(double x, double y, double yaw, double v) const;
+  // Normalised steering [-1, 1] for a vehicle at (x, y) with heading yaw,
+  // speed v and yaw rate r; dt is the time since the last call.
+  double steer(double x, double y, double yaw, double v, double yawRate, double dt);
+  double understeerGain() const { return gain_; }
 
  private:
   PathFollowerParams p_;
   std::function<double(double)> path_;
+  double gain_ = 1.0;           // curvature asked / curvature obtained
+  double lastCurvature_ = 0.0;  // curvature asked for at the last call
 };
 
 }  // namespace bdfcar::scenario

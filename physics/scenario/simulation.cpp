@@ -10,6 +10,7 @@
 #include "multibody/kinematics.h"
 #include "terrain/bullet/bullet_terrain.h"
 #include "terrain/terrain_file.h"
+#include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_file.h"
 
 namespace bdfcar::scenario {
@@ -86,10 +87,10 @@ Simulation::Simulation(const ScenarioSpec& spec)
     p.lookAheadTime = spec_.pathFollower.lookAheadTime;
     p.minLookAhead = spec_.pathFollower.minLookAhead;
     p.wheelbase = vehicle_.spec.geometry.wheelbase;
-    // Steering ratio from the data: road-wheel angle per unit steer, small-angle.
-    const double rackPerSteer = vehicle_.spec.steering.rackTravelFull;
-    p.steerPerRoadWheel = 1.0 / std::max(1e-3, rackPerSteer * 4.6);  // refined in prepare()
-    follower_.emplace(p, [c = *course_](double x) { return c.referenceY(x); });
+    // Steering ratio from the kinematics of the data.
+    p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(vehicle_));
+    // Keep 40 % of each lane's spare width for the tracking error.
+    follower_.emplace(p, [c = *course_, w = vehicleWidth(vehicle_)](double x) { return c.drivingLineY(x, w, 0.6); });
   }
   makeIntegrator();
 }
@@ -225,6 +226,7 @@ Simulation::ChassisState Simulation::chassisState() const {
   s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
   s.yaw = std::atan2(R(1, 0), R(0, 0));
   s.vx = (vb + wb.cross(ch.com)).x();
+  s.yawRate = wb.z();
   return s;
 }
 
@@ -235,7 +237,7 @@ integ::StepReport Simulation::step() {
   in.throttle = throttle_->at(t).value;
   in.brake = brake_->at(t).value;
   if (follower_ && t >= 0) {
-    in.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx);
+    in.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, h);
     rack_.setSegment(t, rack_.steerAt(t), t + h, in.steer);
   } else {
     in.steer = steering_->at(t + h).value;

@@ -80,7 +80,7 @@ class Simulation {
   StartPose startPose() const;
   struct ChassisState {
     Eigen::Vector3d com;
-    double yaw = 0, vx = 0;
+    double yaw = 0, vx = 0, yawRate = 0;
   };
   ChassisState chassisState() const;
   void makeIntegrator();

@@ -6,6 +6,8 @@
 
 #include "multibody/constraints.h"
 #include "multibody/kinematics.h"
+#include "multibody/multibody_dae.h"
+#include "vehicle/equilibrium.h"
 
 namespace bdfcar::vehicle {
 
@@ -71,6 +73,27 @@ std::vector<MotionRatio> motionRatios(const Vehicle& v) {
     out.push_back(r);
   }
   return out;
+}
+
+double roadWheelAnglePerSteer(const Vehicle& v) {
+  const mb::Model& m = v.model;
+  mb::MultibodyDae dae(m);
+  mb::Data d = mb::makeData(m);
+  const double steer = 0.05;
+  double angle[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const double s = k == 0 ? steer : -steer;
+    Eigen::VectorXd q = designPositions(v);
+    q(v.layout.rackQ) = v.layout.rackAxisSign * -v.spec.steering.rackTravelFull * s;
+    std::string msg;
+    if (!assemble(v, dae, 0, q, msg)) return 0;
+    mb::updatePositions(m, q, d);
+    for (int w = 0; w < 2; ++w) {
+      const Eigen::Vector3d n = d.R[v.layout.chassis].transpose() * d.R[v.layout.wheels[w].spindle].col(1);
+      angle[k] += 0.5 * std::atan2(-n.x(), n.y());
+    }
+  }
+  return (angle[0] - angle[1]) / (2 * steer);
 }
 
 }  // namespace bdfcar::vehicle

@@ -20,4 +20,8 @@ struct MotionRatio {
 
 std::vector<MotionRatio> motionRatios(const Vehicle& v);
 
+// Mean road-wheel steer angle of the front wheels per unit normalised
+// steering input (rad), from the kinematics: assembled at small rack travels.
+double roadWheelAnglePerSteer(const Vehicle& v);
+
 }  // namespace bdfcar::vehicle

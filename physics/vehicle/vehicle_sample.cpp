@@ -27,6 +27,8 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   const Mat3& R = d.R[ch];
   const Vec3 c = m.bodies[ch].com;
   out.com = mb::pointPosition(d, ch, c);
+  out.chassisOrigin = d.p[ch];
+  out.chassisRotation = R;
   out.roll = std::atan2(R(2, 1), R(2, 2));
   out.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
   out.yaw = std::atan2(R(1, 0), R(0, 0));

@@ -16,6 +16,8 @@ namespace bdfcar::vehicle {
 struct VehicleSample {
   double t = 0;
   Vec3 com = Vec3::Zero();              // chassis COM, world
+  Vec3 chassisOrigin = Vec3::Zero();    // chassis reference frame, world
+  Mat3 chassisRotation = Mat3::Identity();
   double roll = 0, pitch = 0, yaw = 0;  // Z-Y-X Euler angles of the chassis, rad
   double vx = 0, vy = 0;                // COM velocity in chassis axes, m/s
   double yawRate = 0;                   // chassis angular velocity about chassis z, rad/s

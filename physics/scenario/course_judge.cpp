@@ -1,0 +1,40 @@
+#include "scenario/course_judge.h"
+
+#include <cmath>
+
+namespace bdfcar::scenario {
+
+CourseJudge::CourseJudge(const Iso3888Course& course, double length, double width, const Eigen::Vector3d& centre)
+    : course_(course), halfLength_(0.5 * length), halfWidth_(0.5 * width), centre_(centre), cones_(course.cones()),
+      hit_(cones_.size(), false) {}
+
+void CourseJudge::update(const vehicle::VehicleSample& s) {
+  // Footprint in the ground plane: the chassis pose projected.
+  const Eigen::Vector2d heading(std::cos(s.yaw), std::sin(s.yaw)), left(-heading.y(), heading.x());
+  const Eigen::Vector3d c3 = s.chassisOrigin + s.chassisRotation * centre_;
+  const Eigen::Vector2d c(c3.x(), c3.y());
+  const bool inside = c.x() + halfLength_ >= course_.startX && c.x() - halfLength_ <= course_.endX;
+  if (inside && r_.entryTime < 0) r_.entryTime = s.t;
+  if (!inside && r_.entryTime >= 0 && r_.exitTime < 0 && c.x() > course_.endX) r_.exitTime = s.t;
+  if (!inside) return;
+  r_.peakLateralAcceleration = std::max(r_.peakLateralAcceleration, std::abs(s.ay));
+  for (double a : {-1.0, 1.0})
+    for (double b : {-1.0, 1.0}) {
+      const Eigen::Vector2d corner = c + a * halfLength_ * heading + b * halfWidth_ * left;
+      if (r_.passed && !course_.contains(corner.x(), corner.y())) {
+        r_.passed = false;
+        r_.firstFailureX = corner.x();
+      }
+    }
+  for (size_t i = 0; i < cones_.size(); ++i) {
+    if (hit_[i]) continue;
+    const Eigen::Vector2d d = Eigen::Vector2d(cones_[i].x(), cones_[i].y()) - c;
+    if (std::abs(d.dot(heading)) <= halfLength_ + kConeBaseRadius &&
+        std::abs(d.dot(left)) <= halfWidth_ + kConeBaseRadius) {
+      hit_[i] = true;
+      ++r_.coneHits;
+    }
+  }
+}
+
+}  // namespace bdfcar::scenario
