@@ -510,33 +510,33 @@ TEST(TerrainFile, MissingKeyNamesFileAndKey) {
 TEST(TerrainFile, WrongTypeNamesLineKeyAndType) {
   const std::string m = loadError("type.toml", "kind = \"plane\"\nfriction = \"high\"\n");
   EXPECT_TRUE(contains(m, "type.toml:2:")) << m;
-  EXPECT_TRUE(contains(m, "friction must be a number, got a string")) << m;
+  EXPECT_TRUE(contains(m, "key 'friction': expected a number in (0, 2], got \"high\"")) << m;
   const std::string v = loadError("vec.toml", "kind = \"plane\"\nfriction = 0.9\n[plane]\nnormal = [0, 1]\n");
   EXPECT_TRUE(contains(v, "vec.toml:4:")) << v;
-  EXPECT_TRUE(contains(v, "plane.normal must be an array of 3 numbers")) << v;
+  EXPECT_TRUE(contains(v, "key 'plane.normal': expected 3 components [x, y, z], got 2")) << v;
 }
 
 TEST(TerrainFile, OutOfRangeNamesLineKeyAndRange) {
   const std::string m = loadError("range.toml", "kind = \"plane\"\nfriction = 5.0\n");
   EXPECT_TRUE(contains(m, "range.toml:2:")) << m;
-  EXPECT_TRUE(contains(m, "friction must be in (0, 2], got 5")) << m;
+  EXPECT_TRUE(contains(m, "key 'friction': expected a number in (0, 2], got 5")) << m;
   const std::string b = loadError("bump.toml",
                                   "kind = \"road\"\nfriction = 0.9\n[surface]\nx_min = 0\nx_max = 10\ny_min = -1\n"
                                   "y_max = 1\n[[bumps]]\nx = 2\nlength = -0.5\nheight = 0.1\n");
   EXPECT_TRUE(contains(b, "bump.toml:10:")) << b;
-  EXPECT_TRUE(contains(b, "bumps[0].length must be in (0, 10000], got -0.5")) << b;
+  EXPECT_TRUE(contains(b, "key 'bumps[0].length': expected a number in (0, 10000], got -0.5")) << b;
   const std::string order = loadError("order.toml",
                                       "kind = \"road\"\nfriction = 0.9\n[surface]\nx_min = 10\nx_max = 0\n"
                                       "y_min = -1\ny_max = 1\n");
   EXPECT_TRUE(contains(order, "order.toml:5:")) << order;
-  EXPECT_TRUE(contains(order, "surface.x_max must be greater than x_min")) << order;
+  EXPECT_TRUE(contains(order, "key 'surface.x_max': expected a number greater than x_min")) << order;
   // A grid too large to build is refused before anything is allocated.
   const std::string huge = loadError("huge.toml",
                                      "kind = \"road\"\nfriction = 0.9\nbuild = \"mesh\"\n[surface]\nx_min = 0\n"
                                      "x_max = 100000\ny_min = -10\ny_max = 10\ncell = 0.0001\n[[rough]]\nseed = 1\n"
                                      "x_min = 0\nx_max = 100000\nrms_height = 0.01\n");
   EXPECT_TRUE(contains(huge, "huge.toml:9:")) << huge;
-  EXPECT_TRUE(contains(huge, "surface.cell gives too large a grid")) << huge;
+  EXPECT_TRUE(contains(huge, "key 'surface.cell': gives too large a grid")) << huge;
 }
 
 TEST(TerrainFile, UnknownKeysAreErrors) {
@@ -554,12 +554,13 @@ TEST(TerrainFile, UnknownKeysAreErrors) {
   EXPECT_TRUE(contains(other, "unknown key 'mesh'")) << other;
   const std::string kind = loadError("kind.toml", "kind = \"lava\"\nfriction = 0.9\n");
   EXPECT_TRUE(contains(kind, "kind.toml:1:")) << kind;
-  EXPECT_TRUE(contains(kind, "kind must be one of \"plane\", \"mesh\", \"heightfield\", \"road\", got \"lava\"")) << kind;
+  EXPECT_TRUE(contains(kind, "key 'kind': expected one of \"plane\", \"mesh\", \"heightfield\", \"road\", got \"lava\"")) << kind;
 }
 
 TEST(TerrainFile, MissingOrBrokenObjNamesBothFiles) {
   const std::string m = loadError("noobj.toml", "kind = \"mesh\"\nfriction = 0.9\n[mesh]\nobj = \"nothere.obj\"\n");
   EXPECT_TRUE(contains(m, "noobj.toml:4:")) << m;
+  EXPECT_TRUE(contains(m, "key 'mesh.obj'")) << m;
   EXPECT_TRUE(contains(m, "nothere.obj")) << m;
   EXPECT_TRUE(contains(m, "does not exist")) << m;
   writeFile("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
@@ -575,14 +576,13 @@ TEST(TerrainFile, MissingOrBrokenObjNamesBothFiles) {
 
 TEST(TerrainFile, BrokenTomlAndRaggedRowsAreReported) {
   const std::string s = loadError("syntax.toml", "kind = \"plane\"\nfriction = [0.9,\n");
-  EXPECT_TRUE(contains(s, "syntax.toml")) << s;
+  EXPECT_TRUE(contains(s, "syntax.toml:3:")) << s;  // where toml11 finds the array unfinished
   EXPECT_TRUE(contains(s, "syntax error")) << s;
-  EXPECT_TRUE(contains(s, " 2 |")) << s;  // toml11's excerpt of line 2
   const std::string r = loadError("ragged.toml",
                                   "kind = \"heightfield\"\nfriction = 0.9\n[heightfield]\ndx = 1\ndy = 1\n"
                                   "heights = [\n  [0, 0, 0],\n  [0, 0],\n]\n");
   EXPECT_TRUE(contains(r, "ragged.toml:8:")) << r;
-  EXPECT_TRUE(contains(r, "every row must have 3 heights")) << r;
+  EXPECT_TRUE(contains(r, "key 'heightfield.heights': expected rows of 3 numbers like the first, got an array of 2 elements")) << r;
   try {
     loadTerrain((scratchDir() / "absent.toml").string());
     ADD_FAILURE() << "no error for a missing file";

@@ -185,7 +185,7 @@ TEST(VehicleFile, BadInputNamesFileLineKeyAndExpectation) {
   EXPECT_NE(e.find("positive"), std::string::npos) << e;
   // Missing key.
   e = loadError(replaced(base, "design_height = 0.5128", ""));
-  EXPECT_NE(e.find("missing key 'design_height'"), std::string::npos) << e;
+  EXPECT_NE(e.find("missing key 'vehicle.design_height'"), std::string::npos) << e;
   // Wrong type.
   e = loadError(replaced(base, "free_length = 0.355374", "free_length = \"long\""));
   EXPECT_NE(e.find("free_length"), std::string::npos) << e;
@@ -198,7 +198,7 @@ TEST(VehicleFile, BadInputNamesFileLineKeyAndExpectation) {
   EXPECT_NE(e.find("triangle inequality"), std::string::npos) << e;
   // Unknown key (a typo).
   e = loadError(replaced(base, "stiffness = 369149.0", "stifness = 369149.0"));
-  EXPECT_NE(e.find("unknown key 'stifness'"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key 'springs[0].stifness'"), std::string::npos) << e;
   // A line number that points at the offending line.
   const std::string bad = replaced(base, "mass = 9.072", "mass = -9.072");
   const size_t lineOfBad = 1 + std::count(bad.begin(), bad.begin() + static_cast<long>(bad.find("mass = -9.072")), '\n');

@@ -1,5 +1,7 @@
 #include "config/toml_reader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <toml.hpp>
@@ -21,16 +23,36 @@ int lineOf(const toml::value& v) {
   return static_cast<int>(loc.line());
 }
 
+// What a value is, for "got ..." in messages: scalars by value (what the
+// reader typed), arrays by size, the rest by type.
 std::string describe(const toml::value& v) {
   switch (v.type()) {
-    case toml::value_t::boolean: return "a boolean";
-    case toml::value_t::integer: return "an integer";
-    case toml::value_t::floating: return "a number";
-    case toml::value_t::string: return "a string";
-    case toml::value_t::array: return "an array";
+    case toml::value_t::boolean: return v.as_boolean() ? "true" : "false";
+    case toml::value_t::integer: return std::to_string(v.as_integer());
+    case toml::value_t::floating: return formatNumber(v.as_floating());
+    case toml::value_t::string: return "\"" + v.as_string().str + "\"";
+    case toml::value_t::array: {
+      const std::size_t n = v.as_array().size();
+      return n == 0 ? "an empty array" : "an array of " + std::to_string(n) + (n == 1 ? " element" : " elements");
+    }
     case toml::value_t::table: return "a table";
     default: return "a date/time";
   }
+}
+
+bool isNumber(const toml::value& v) { return v.is_integer() || v.is_floating(); }
+double asNumber(const toml::value& v) {
+  return v.is_integer() ? static_cast<double>(v.as_integer()) : v.as_floating();
+}
+
+// "one of \"a\", \"b\"" and "a, b" for messages.
+std::string listed(const std::vector<std::string_view>& words, bool quoted) {
+  std::string out;
+  for (std::string_view w : words) {
+    if (!out.empty()) out += ", ";
+    out += quoted ? "\"" + std::string(w) + "\"" : std::string(w);
+  }
+  return out;
 }
 
 }  // namespace
@@ -39,6 +61,8 @@ Table::Table(std::shared_ptr<const TomlDocument> doc, const void* value, std::st
     : doc_(std::move(doc)), value_(value), context_(std::move(context)), used_(std::make_shared<std::set<std::string>>()) {}
 
 const std::string& Table::file() const { return doc_->path; }
+
+std::string Table::dotted(const std::string& key) const { return context_.empty() ? key : context_ + "." + key; }
 
 int Table::line(const std::string& key) const {
   if (!key.empty())
@@ -53,14 +77,25 @@ void Table::failAt(const void* value, const std::string& message) const {
   throw ConfigError(os.str());
 }
 
+void Table::failValue(const void* value, const std::string& key, const std::string& expectation) const {
+  failAt(value, "key '" + dotted(key) + "': expected " + expectation + ", got " + describe(V(value)));
+}
+
 void Table::fail(const std::string& message, const std::string& key) const {
-  const void* at = key.empty() ? nullptr : find(key);
-  const std::string where = context_.empty() ? "" : "in [" + context_ + "] ";
-  failAt(at, where + (key.empty() ? "" : "key '" + key + "': ") + message);
+  if (!key.empty()) failAt(find(key), "key '" + dotted(key) + "': " + message);
+  failAt(nullptr, (context_.empty() ? "" : "in [" + context_ + "] ") + message);
 }
 
 void Table::require(bool ok, const std::string& key, const std::string& expectation) const {
   if (!ok) fail("expected " + expectation, key);
+}
+
+void Table::reject(const std::string& key, const std::string& expectation, int element) const {
+  const void* v = find(key);
+  if (!v) failAt(nullptr, "missing key '" + dotted(key) + "': expected " + expectation);
+  if (element >= 0 && V(v).is_array() && static_cast<std::size_t>(element) < V(v).as_array().size())
+    v = &V(v).as_array()[static_cast<std::size_t>(element)];
+  failValue(v, key, expectation);
 }
 
 const void* Table::find(const std::string& key) const {
@@ -84,10 +119,7 @@ std::vector<std::string> Table::keys() const {
 
 const void* Table::get(const std::string& key, const std::string& expectation) {
   const void* v = find(key);
-  if (!v) {
-    const std::string where = context_.empty() ? "" : " in [" + context_ + "]";
-    failAt(nullptr, "missing key '" + key + "'" + where + ": expected " + expectation);
-  }
+  if (!v) failAt(nullptr, "missing key '" + dotted(key) + "': expected " + expectation);
   used_->insert(key);
   return v;
 }
@@ -96,12 +128,8 @@ namespace {
 
 // A number, or a quantity string "<number> <unit>" of dimension d.
 bool toQuantity(const toml::value& v, Dimension d, double& out, std::string& why) {
-  if (v.is_floating()) {
-    out = v.as_floating();
-    return true;
-  }
-  if (v.is_integer()) {
-    out = static_cast<double>(v.as_integer());
+  if (isNumber(v)) {
+    out = asNumber(v);
     return true;
   }
   if (v.is_string()) {
@@ -116,6 +144,19 @@ bool toQuantity(const toml::value& v, Dimension d, double& out, std::string& why
 std::string quantityExpectation(Dimension d) {
   if (d == Dimension::None) return "a number";
   return std::string("a ") + dimensionName(d) + " (a number in " + siUnit(d) + ", or a string with a unit)";
+}
+
+std::string rangeExpectation(const Range& r) {
+  const std::string interval = r.text();
+  return interval.empty() ? "a finite number" : "a number " + interval;
+}
+
+std::string integerExpectation(long lo, long hi) {
+  return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+}
+
+bool isIntegerIn(const toml::value& v, long lo, long hi) {
+  return v.is_integer() && v.as_integer() >= lo && v.as_integer() <= hi;
 }
 
 }  // namespace
@@ -136,7 +177,7 @@ double Table::number(const std::string& key, Dimension d, double fallback) {
 
 std::string Table::string(const std::string& key) {
   const void* v = get(key, "a string");
-  if (!V(v).is_string()) fail("expected a string, got " + describe(V(v)), key);
+  if (!V(v).is_string()) failValue(v, key, "a string");
   return V(v).as_string().str;
 }
 
@@ -146,7 +187,7 @@ std::string Table::string(const std::string& key, const std::string& fallback) {
 
 bool Table::boolean(const std::string& key) {
   const void* v = get(key, "true or false");
-  if (!V(v).is_boolean()) fail("expected true or false, got " + describe(V(v)), key);
+  if (!V(v).is_boolean()) failValue(v, key, "true or false");
   return V(v).as_boolean();
 }
 
@@ -154,7 +195,7 @@ bool Table::boolean(const std::string& key, bool fallback) { return has(key) ? b
 
 long Table::integer(const std::string& key) {
   const void* v = get(key, "an integer");
-  if (!V(v).is_integer()) fail("expected an integer, got " + describe(V(v)), key);
+  if (!V(v).is_integer()) failValue(v, key, "an integer");
   return static_cast<long>(V(v).as_integer());
 }
 
@@ -163,12 +204,12 @@ long Table::integer(const std::string& key, long fallback) { return has(key) ? i
 std::vector<double> Table::numbers(const std::string& key, Dimension d) {
   const std::string exp = "an array of " + quantityExpectation(d).substr(2) + "s";
   const void* v = get(key, exp);
-  if (!V(v).is_array()) fail("expected " + exp + ", got " + describe(V(v)), key);
+  if (!V(v).is_array()) failValue(v, key, exp);
   std::vector<double> out;
   for (const auto& e : V(v).as_array()) {
     double x;
     std::string why;
-    if (!toQuantity(e, d, x, why)) failAt(&e, "key '" + key + "': expected " + exp + ", element " + why);
+    if (!toQuantity(e, d, x, why)) failAt(&e, "key '" + dotted(key) + "': expected " + exp + ", element " + why);
     out.push_back(x);
   }
   return out;
@@ -176,10 +217,10 @@ std::vector<double> Table::numbers(const std::string& key, Dimension d) {
 
 std::vector<std::string> Table::strings(const std::string& key) {
   const void* v = get(key, "an array of strings");
-  if (!V(v).is_array()) fail("expected an array of strings, got " + describe(V(v)), key);
+  if (!V(v).is_array()) failValue(v, key, "an array of strings");
   std::vector<std::string> out;
   for (const auto& e : V(v).as_array()) {
-    if (!e.is_string()) failAt(&e, "key '" + key + "': expected an array of strings, element is " + describe(e));
+    if (!e.is_string()) failValue(&e, key, "an array of strings");
     out.push_back(e.as_string().str);
   }
   return out;
@@ -191,10 +232,14 @@ Eigen::Vector3d Table::vector3(const std::string& key, Dimension d) {
   return Eigen::Vector3d(x[0], x[1], x[2]);
 }
 
+Eigen::Vector3d Table::vector3(const std::string& key, Dimension d, const Eigen::Vector3d& fallback) {
+  return has(key) ? vector3(key, d) : fallback;
+}
+
 Table Table::table(const std::string& key) {
   const void* v = get(key, "a table");
-  if (!V(v).is_table()) fail("expected a table, got " + describe(V(v)), key);
-  return Table(doc_, v, context_.empty() ? key : context_ + "." + key);
+  if (!V(v).is_table()) failValue(v, key, "a table");
+  return Table(doc_, v, dotted(key));
 }
 
 std::optional<Table> Table::optionalTable(const std::string& key) {
@@ -203,13 +248,14 @@ std::optional<Table> Table::optionalTable(const std::string& key) {
 }
 
 std::vector<Table> Table::tables(const std::string& key) {
-  const void* v = get(key, "an array of tables ([[" + key + "]])");
-  if (!V(v).is_array()) fail("expected an array of tables, got " + describe(V(v)), key);
+  const std::string exp = "an array of tables ([[" + key + "]])";
+  const void* v = get(key, exp);
+  if (!V(v).is_array()) failValue(v, key, exp);
   std::vector<Table> out;
   int i = 0;
   for (const auto& e : V(v).as_array()) {
-    if (!e.is_table()) failAt(&e, "key '" + key + "': expected tables, got " + describe(e));
-    out.emplace_back(doc_, &e, key + "[" + std::to_string(i++) + "]");
+    if (!e.is_table()) failValue(&e, key, exp);
+    out.emplace_back(doc_, &e, dotted(key) + "[" + std::to_string(i++) + "]");
   }
   return out;
 }
@@ -219,22 +265,121 @@ std::vector<Table> Table::optionalTables(const std::string& key) {
   return tables(key);
 }
 
-void Table::finish() const {
-  for (const auto& [k, v] : V(value_).as_table())
-    if (!used_->count(k)) {
-      const std::string where = context_.empty() ? "" : " in [" + context_ + "]";
-      failAt(&v, "unknown key '" + k + "'" + where);
-    }
+double Table::numberIn(const std::string& key, const Range& range) {
+  const std::string exp = rangeExpectation(range);
+  const void* v = get(key, exp);
+  // NaN and inf are outside every range, even an unbounded one.
+  if (!isNumber(V(v)) || !std::isfinite(asNumber(V(v))) || !range.contains(asNumber(V(v)))) failValue(v, key, exp);
+  return asNumber(V(v));
 }
 
-Table parseTomlFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ":0: cannot open the file");
+double Table::numberIn(const std::string& key, const Range& range, double fallback) {
+  return has(key) ? numberIn(key, range) : fallback;
+}
+
+long Table::integerIn(const std::string& key, long lo, long hi) {
+  const std::string exp = integerExpectation(lo, hi);
+  const void* v = get(key, exp);
+  if (!isIntegerIn(V(v), lo, hi)) failValue(v, key, exp);
+  return static_cast<long>(V(v).as_integer());
+}
+
+long Table::integerIn(const std::string& key, long lo, long hi, long fallback) {
+  return has(key) ? integerIn(key, lo, hi) : fallback;
+}
+
+std::vector<long> Table::integersIn(const std::string& key, long lo, long hi) {
+  if (!has(key)) return {};
+  const std::string exp = integerExpectation(lo, hi) + " or an array of them";
+  const void* v = get(key, exp);
+  if (!V(v).is_array()) {
+    if (!isIntegerIn(V(v), lo, hi)) failValue(v, key, exp);
+    return {static_cast<long>(V(v).as_integer())};
+  }
+  std::vector<long> out;
+  for (const auto& e : V(v).as_array()) {
+    if (!isIntegerIn(e, lo, hi)) failValue(&e, key, exp);
+    out.push_back(static_cast<long>(e.as_integer()));
+  }
+  return out;
+}
+
+std::string Table::choice(const std::string& key, const std::vector<std::string_view>& choices) {
+  const std::string exp = "one of " + listed(choices, true);
+  const void* v = get(key, exp);
+  if (!V(v).is_string() || std::find(choices.begin(), choices.end(), V(v).as_string().str) == choices.end())
+    failValue(v, key, exp);
+  return V(v).as_string().str;
+}
+
+std::string Table::choice(const std::string& key, const std::vector<std::string_view>& choices,
+                          const std::string& fallback) {
+  return has(key) ? choice(key, choices) : fallback;
+}
+
+std::vector<std::string> Table::stringOrStrings(const std::string& key) {
+  if (!has(key)) return {};
+  const std::string exp = "a string or an array of strings";
+  const void* v = get(key, exp);
+  if (V(v).is_string()) return {V(v).as_string().str};
+  if (!V(v).is_array()) failValue(v, key, exp);
+  std::vector<std::string> out;
+  for (const auto& e : V(v).as_array()) {
+    if (!e.is_string()) failValue(&e, key, exp);
+    out.push_back(e.as_string().str);
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> Table::grid(const std::string& key, std::size_t minRows, std::size_t minColumns) {
+  const std::string exp = "an array of at least " + std::to_string(minRows) + " rows, each an array of at least " +
+                          std::to_string(minColumns) + " numbers";
+  const void* v = get(key, exp);
+  if (!V(v).is_array() || V(v).as_array().size() < minRows) failValue(v, key, exp);
+  std::vector<std::vector<double>> rows;
+  for (const auto& row : V(v).as_array()) {
+    if (!row.is_array() || row.as_array().size() < minColumns) failValue(&row, key, exp);
+    // Ragged rows are reported at the first one that differs from the first row.
+    if (!rows.empty() && row.as_array().size() != rows.front().size())
+      failValue(&row, key, "rows of " + std::to_string(rows.front().size()) + " numbers like the first");
+    std::vector<double>& out = rows.emplace_back();
+    for (const auto& e : row.as_array()) {
+      if (!isNumber(e) || !std::isfinite(asNumber(e))) failValue(&e, key, "finite numbers in every row");
+      out.push_back(asNumber(e));
+    }
+  }
+  return rows;
+}
+
+// Reports the unknown key written first, so the message points at the first typo.
+void Table::failFirstUnknown(const std::vector<std::string_view>& known, const std::string& suffix) const {
+  const toml::value* first = nullptr;
+  std::string firstKey;
+  for (const auto& [k, v] : V(value_).as_table()) {
+    if (std::find(known.begin(), known.end(), k) != known.end()) continue;
+    const bool earlier = !first || lineOf(v) < lineOf(*first) || (lineOf(v) == lineOf(*first) && k < firstKey);
+    if (earlier) first = &v, firstKey = k;
+  }
+  if (first) failAt(first, "unknown key '" + dotted(firstKey) + "'" + suffix);
+}
+
+void Table::finish() const {
+  failFirstUnknown(std::vector<std::string_view>(used_->begin(), used_->end()), "");
+}
+
+void Table::rejectUnknownKeys(const std::vector<std::string_view>& known) const {
+  failFirstUnknown(known, "; expected one of: " + listed(known, false));
+}
+
+namespace {
+
+// The whole document, or a ConfigError naming the line where the syntax breaks.
+Table parseStream(std::istream& in, const std::string& path) {
   auto doc = std::make_shared<TomlDocument>();
   doc->path = path;
   try {
     doc->root = toml::parse(in, path);
-  } catch (const toml::syntax_error& e) {
+  } catch (const toml::exception& e) {
     const auto& loc = e.location();
     std::string msg = e.what();
     // toml11 prefixes "[error] " and adds an excerpt; keep its first line.
@@ -244,6 +389,19 @@ Table parseTomlFile(const std::string& path) {
     throw ConfigError(path + ":" + std::to_string(loc.line()) + ": TOML syntax error: " + msg);
   }
   return Table(doc, &doc->root, "");
+}
+
+}  // namespace
+
+Table parseTomlFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path + ":0: cannot open the file");
+  return parseStream(in, path);
+}
+
+Table parseTomlText(const std::string& text, const std::string& fileName) {
+  std::istringstream in(text);
+  return parseStream(in, fileName);
 }
 
 }  // namespace bdfcar::config

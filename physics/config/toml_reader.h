@@ -1,16 +1,22 @@
 // Reading TOML config files (toml11) into plain structs with errors that name
-// the file, the line, the key and what was expected. Every key a reader does
-// not consume is reported as unknown, so typos do not pass silently.
+// the file, the line, the dotted key ("bumps[0].length") and what was
+// expected. Every key a reader does not consume (finish) or does not allow
+// (rejectUnknownKeys) is reported as unknown, so typos do not pass silently.
+// This is the only reader of TOML: toml.hpp costs ~20 s per file that
+// includes it, so it stays inside toml_reader.cpp.
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "config/range.h"
 #include "config/units.h"
 
 namespace toml {
@@ -45,8 +51,29 @@ class Table {
   std::string string(const std::string& key, const std::string& fallback);
   bool boolean(const std::string& key, bool fallback);
   long integer(const std::string& key, long fallback);
+  Eigen::Vector3d vector3(const std::string& key, Dimension d, const Eigen::Vector3d& fallback);
   std::optional<Table> optionalTable(const std::string& key);
   std::vector<Table> optionalTables(const std::string& key);
+
+  // Checked plain values (TOML numbers and strings, no unit strings); errors
+  // show what was found: "key 'friction': expected a number in (0, 2], got 5".
+  // A finite number in `range`.
+  double numberIn(const std::string& key, const Range& range);
+  double numberIn(const std::string& key, const Range& range, double fallback);
+  // An integer in [lo, hi].
+  long integerIn(const std::string& key, long lo, long hi);
+  long integerIn(const std::string& key, long lo, long hi, long fallback);
+  // One integer in [lo, hi] or an array of them; none when absent.
+  std::vector<long> integersIn(const std::string& key, long lo, long hi);
+  // A string that is one of `choices`.
+  std::string choice(const std::string& key, const std::vector<std::string_view>& choices);
+  std::string choice(const std::string& key, const std::vector<std::string_view>& choices,
+                     const std::string& fallback);
+  // One string or an array of strings; none when absent.
+  std::vector<std::string> stringOrStrings(const std::string& key);
+  // An array of at least minRows rows, each an array of at least minColumns
+  // finite numbers and all as long as the first (a grid of samples).
+  std::vector<std::vector<double>> grid(const std::string& key, std::size_t minRows, std::size_t minColumns);
 
   bool has(const std::string& key) const;
   bool isString(const std::string& key) const;
@@ -56,12 +83,19 @@ class Table {
 
   // Checks on values already read (error located at the key).
   void require(bool ok, const std::string& key, const std::string& expectation) const;
+  // "key 'k': expected <expectation>, got <the value>" at the key (at element
+  // `element` of its array when >= 0); "missing key 'k'" when it is absent.
+  [[noreturn]] void reject(const std::string& key, const std::string& expectation, int element = -1) const;
   // An error located at this table (or at `key` when given).
   [[noreturn]] void fail(const std::string& message, const std::string& key = "") const;
-  // Throws for every key that was never read.
+  // Throws at the first key (by line) that was never read.
   void finish() const;
+  // Throws at the first key (by line) not in `known`, listing them; for
+  // readers that check keys before reading (or read only some of them).
+  void rejectUnknownKeys(const std::vector<std::string_view>& known) const;
 
-  const std::string& context() const { return context_; }  // e.g. "bodies[3]"
+  const std::string& context() const { return context_; }  // e.g. "bodies[3]", "axes.steering"
+  std::string dotted(const std::string& key) const;        // context.key, or key at the top
   const std::string& file() const;
   int line(const std::string& key = "") const;
 
@@ -71,6 +105,8 @@ class Table {
   const void* find(const std::string& key) const;
   const void* get(const std::string& key, const std::string& expectation);
   [[noreturn]] void failAt(const void* value, const std::string& message) const;
+  [[noreturn]] void failValue(const void* value, const std::string& key, const std::string& expectation) const;
+  void failFirstUnknown(const std::vector<std::string_view>& known, const std::string& suffix) const;
 
   std::shared_ptr<const TomlDocument> doc_;
   const void* value_;  // const toml::value*
@@ -78,8 +114,10 @@ class Table {
   std::shared_ptr<std::set<std::string>> used_;
 };
 
-// Parses a file; throws ConfigError (with line and column) on syntax errors
-// or when the file cannot be read.
+// Parses a file; throws ConfigError (with the line) on syntax errors or when
+// the file cannot be read.
 Table parseTomlFile(const std::string& path);
+// Parses TOML text read elsewhere; `fileName` is what messages call it.
+Table parseTomlText(const std::string& text, const std::string& fileName);
 
 }  // namespace bdfcar::config

@@ -2,12 +2,13 @@
 // built into mesh or heightfield data (internal to the terrain loader).
 #pragma once
 
+#include "config/toml_reader.h"
 #include "terrain/road_surface.h"
-#include "terrain/toml_fields.h"
 
 namespace bdfcar::terrain {
 
-// Reads build, [surface], [[bumps]], [[ramps]] and [[rough]] of the top-level table.
-RoadSurface readRoadSurface(const toml_fields::Table& top);
+// Reads [surface], [[bumps]], [[ramps]] and [[rough]] of the top-level table
+// (build stays with the caller); errors are config::ConfigError.
+RoadSurface readRoadSurface(config::Table& top);
 
 }  // namespace bdfcar::terrain
