@@ -25,25 +25,39 @@ struct Comparison {
   test::ColumnError yawRate, lateral, roll;
 };
 
-Comparison runJTurn(double step, int newton, int jacobianEvery, const std::string& vehicle = "sedan.toml") {
+struct JTurnRun {
+  scenario::RunResult result;
+  Comparison error;
+};
+
+JTurnRun runJTurnWith(double step, int newton, int jacobianEvery, const std::string& vehicle,
+                 scenario::IntegratorMethod method) {
   scenario::ScenarioSpec s = scenario::loadScenarioFile(source("assets/scenarios/jturn.toml"));
   s.vehicleFile = source("assets/vehicles/" + vehicle);
+  s.integrator.method = method;
   s.integrator.step = step;
   s.integrator.newtonIterations = newton;
   s.integrator.jacobianEvery = jacobianEvery;
   scenario::Simulation sim(s);
-  const scenario::RunResult r = scenario::runScenario(sim, {});
-  EXPECT_TRUE(r.ok) << r.failure;
+  JTurnRun run{scenario::runScenario(sim, {}), {}};
+  if (!run.result.ok) return run;
   std::vector<double> yaw, ay, roll;
-  for (const auto& x : r.samples) {
+  for (const auto& x : run.result.samples) {
     yaw.push_back(x.yawRate);
     ay.push_back(x.ay);
     roll.push_back(x.roll);
   }
   const test::Table ref = test::readCsv(source("tests/data/ref_jturn.csv"));
-  EXPECT_EQ(r.samples.size(), ref.values.at("time_s").size());
-  return {test::compareColumn(ref, yaw, "yawrate_radps"), test::compareColumn(ref, ay, "ay_mps2"),
-          test::compareColumn(ref, roll, "roll_rad")};
+  EXPECT_EQ(run.result.samples.size(), ref.values.at("time_s").size());
+  run.error = {test::compareColumn(ref, yaw, "yawrate_radps"), test::compareColumn(ref, ay, "ay_mps2"),
+               test::compareColumn(ref, roll, "roll_rad")};
+  return run;
+}
+
+Comparison runJTurn(double step, int newton, int jacobianEvery, const std::string& vehicle = "sedan.toml") {
+  const JTurnRun r = runJTurnWith(step, newton, jacobianEvery, vehicle, scenario::IntegratorMethod::Bdf);
+  EXPECT_TRUE(r.result.ok) << r.result.failure;
+  return r.error;
 }
 
 }  // namespace
@@ -73,4 +87,22 @@ TEST(Reference, PaperTopologyStaysCloseToTheReference) {
   const Comparison c = runJTurn(0.01, 2, 200, "paper.toml");
   EXPECT_LT(c.yawRate.rmsPercent, 0.5);
   EXPECT_LT(c.lateral.rmsPercent, 0.75);
+}
+
+TEST(Reference, ImplicitHoldsAtTenMillisecondsWhereExplicitDoesNot) {
+  // The paper's claim, on the same model: at the driver's 10 ms the tyre's
+  // slip mode (h lambda ~ 6) lies outside RK4's stability region (2.8). The
+  // saturating tyre force either lets it blow up or holds it in a bounded
+  // chatter (55 % measured); either way the run is not the car's motion.
+  // Inside the region (2 ms) the same RK4 agrees with the reference (0.17 %),
+  // so the failure at 10 ms is the step, not the explicit implementation.
+  const JTurnRun rk4Coarse = runJTurnWith(0.01, 2, 200, "sedan.toml", scenario::IntegratorMethod::Rk4);
+  if (rk4Coarse.result.ok) {
+    EXPECT_GT(rk4Coarse.error.yawRate.rmsPercent, 10.0);
+  }
+  const JTurnRun rk4Fine = runJTurnWith(0.002, 2, 200, "sedan.toml", scenario::IntegratorMethod::Rk4);
+  ASSERT_TRUE(rk4Fine.result.ok) << rk4Fine.result.failure;
+  EXPECT_LT(rk4Fine.error.yawRate.rmsPercent, 0.5);
+  const Comparison bdf = runJTurn(0.01, 2, 200);
+  EXPECT_LT(bdf.yawRate.rmsPercent, 0.25);
 }

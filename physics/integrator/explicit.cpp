@@ -1,5 +1,7 @@
 #include "integrator/explicit.h"
 
+#include <Eigen/Cholesky>
+
 namespace bdfcar::integ {
 
 ExplicitIntegrator::ExplicitIntegrator(Dae& dae, const ExplicitOptions& options)
@@ -12,6 +14,28 @@ ExplicitIntegrator::ExplicitIntegrator(Dae& dae, const ExplicitOptions& options)
     kd_[i].setZero(n_.nv);
     kv_[i].setZero(n_.nv);
   }
+  J_.setZero(n_.nc, n_.nv);
+  r_.resize(n_);
+  ws_.resize(n_);
+}
+
+EvalStatus ExplicitIntegrator::project(double t, Message& msg) {
+  if (n_.nc == 0) return EvalStatus::Ok;
+  const Vec zv = Vec::Zero(n_.nv), zc = Vec::Zero(n_.nc);
+  for (int it = 0; it < 3; ++it) {
+    EvalStatus st = dae_.residual(t, cur_.q, cur_.v, zv, zc, r_, true, msg);
+    if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, cur_.q, J_, ws_, counters_.jacobianResiduals);
+    if (st != EvalStatus::Ok) return st;
+    const Eigen::LDLT<Mat> jjt(J_ * J_.transpose());
+    if (it < 2) {  // positions: q (+) J^T (J J^T)^-1 (-phi)
+      d_ = J_.transpose() * jjt.solve(-r_.phi);
+      dae_.retract(cur_.q, d_, q_);
+      cur_.q = q_;
+    } else {  // velocities: v + J^T (J J^T)^-1 (-phiDot)
+      cur_.v += J_.transpose() * jjt.solve(-r_.phiDot);
+    }
+  }
+  return EvalStatus::Ok;
 }
 
 EvalStatus ExplicitIntegrator::initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) {
@@ -72,6 +96,11 @@ StepReport ExplicitIntegrator::step(double h) {
   }
   cur_.t = t + h;
   cur_.lambda = lam_;
+  if (finiteState()) st = project(cur_.t, rep.message);
+  if (st != EvalStatus::Ok) {
+    rep.status = StepStatus::EvaluationFailed;
+    return rep;
+  }
   ++counters_.steps;
   if (!finiteState()) {
     rep.status = StepStatus::Diverged;

@@ -186,6 +186,7 @@ vehicle::EquilibriumReport Simulation::prepare() {
   if (integrator_->initialize(t0, q, v, im) != integ::EvalStatus::Ok)
     throw std::runtime_error(std::string("initial state: ") + im.c_str());
   prepared_ = true;
+  airborne_ = 0;
   // Settling: straight running with the scripted driver (steering is zero before tau = 0).
   const double h = spec_.integrator.step;
   const long settleSteps = std::lround(spec_.settleTime / h);
@@ -211,7 +212,20 @@ void Simulation::applyDrive(const DriverInput& in, double vx, double h) {
 integ::StepReport Simulation::advance(const DriverInput& in) {
   if (!prepared_) throw std::logic_error("Simulation::prepare() must run before step()");
   lastInput_ = in;
-  return integrator_->step(spec_.integrator.step);
+  const double h = spec_.integrator.step;
+  integ::StepReport r = integrator_->step(h);
+  if (!r.ok()) return r;
+  bool grounded = false;
+  for (const vehicle::WheelContact& w : forces_->wheels()) grounded = grounded || w.plane.valid;
+  airborne_ = grounded ? 0.0 : airborne_ + h;
+  if (airborne_ > kMaxAirborne) {
+    const Eigen::Vector3d com = chassisState().com;
+    r.status = integ::StepStatus::StateCheckFailed;
+    r.message.set("the car left the terrain: no ground under any wheel for %.1f s (centre of mass at x = %.1f m, "
+                  "y = %.1f m, z = %.1f m, t = %.2f s)",
+                  kMaxAirborne, com.x(), com.y(), com.z(), time());
+  }
+  return r;
 }
 
 Simulation::ChassisState Simulation::chassisState() const {

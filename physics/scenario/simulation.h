@@ -100,6 +100,11 @@ class Simulation {
   RackSignal rack_;
   DriverInput lastInput_;
   bool prepared_ = false;
+  // Time with no ground under any wheel: off the edge of a bounded terrain the
+  // car would fall for ever, so the run stops with a message instead. A jump
+  // off a ramp lasts well under kMaxAirborne.
+  double airborne_ = 0;
+  static constexpr double kMaxAirborne = 3.0;  // s
 };
 
 // The vehicle width used for the ISO course: overall width over the tyres.
