@@ -17,6 +17,7 @@ using CommandList = std::vector<Command>;
 void addVersionCommand(CLI::App& app, CommandList& commands);
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
+void addReportCommand(CLI::App& app, CommandList& commands);
 // bdfcar (on screen):
 void addDriveCommand(CLI::App& app, CommandList& commands);
 void addDemoCommand(CLI::App& app, CommandList& commands);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   addVersionCommand(app, commands);
   addInfoCommand(app, commands);
   addRunCommand(app, commands);
+  addReportCommand(app, commands);
 #ifdef BDFCAR_WITH_GRAPHICS
   addDriveCommand(app, commands);
   addDemoCommand(app, commands);

@@ -14,6 +14,9 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
   cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
+  cmd.add_flag("--as-published", ov.asPublished,
+               "The paper's Newton as published: the fixed count only, no Jacobian refresh or rescue "
+               "when it stops contracting (Tables 3 and 4)");
   cmd.add_option("--settle", ov.settle, "Settling time before the manoeuvre, s")->check(CLI::Range(0.0, 1e4));
 }
 
@@ -30,6 +33,7 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
   if (ov.settle) spec.settleTime = *ov.settle;
+  if (ov.asPublished) it.refreshWhenNotContracting = false;
 }
 
 }  // namespace bdfcar::app

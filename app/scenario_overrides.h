@@ -14,6 +14,7 @@ struct ScenarioOverrides {
   std::optional<double> step, duration, settle;
   std::optional<std::string> integrator, vehicle;
   std::optional<int> order, newton, jacobianEvery;
+  bool asPublished = false;  // the paper's Newton as published: no refresh when it stops contracting
 };
 
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov);

@@ -1,5 +1,7 @@
 #include "render/png_queue.h"
 
+#include <chrono>
+
 #include "render/png_writer.h"
 
 namespace bdfcar::render {
@@ -40,6 +42,11 @@ int PngQueue::written() const {
   return written_;
 }
 
+std::vector<double> PngQueue::encodeSeconds() const {
+  std::lock_guard lock(mutex_);
+  return encodeSeconds_;
+}
+
 // Worker loop: encode outside the lock so push() never waits for zlib.
 void PngQueue::run() {
   std::unique_lock lock(mutex_);
@@ -52,14 +59,19 @@ void PngQueue::run() {
     changed_.notify_all();
     lock.unlock();
     std::string failure;
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       writePng(job.path, job.frame, level_);
     } catch (const std::exception& e) {
       failure = e.what();
     }
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     lock.lock();
     busy_ = false;
-    if (failure.empty()) ++written_;
+    if (failure.empty()) {
+      ++written_;
+      encodeSeconds_.push_back(took);
+    }
     else if (error_.empty()) error_ = failure;
     changed_.notify_all();
   }

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "render/frame.h"
 
@@ -24,6 +25,8 @@ class PngQueue {
   // Waits until every queued frame is written; throws the first write error, if any.
   void flush();
   int written() const;
+  // Seconds each written frame took to encode and write (on the worker thread).
+  std::vector<double> encodeSeconds() const;
 
  private:
   void run();
@@ -38,6 +41,7 @@ class PngQueue {
   std::deque<Job> jobs_;
   bool busy_ = false, stopping_ = false;
   int written_ = 0;
+  std::vector<double> encodeSeconds_;
   std::string error_;
   std::thread worker_;
 };

@@ -18,8 +18,10 @@ bool ffmpegAvailable() { return std::system("command -v ffmpeg > /dev/null 2>&1"
 
 void printFrameStats(const FramesResult& r) {
   const Percentiles rp = r.stats.render();
-  std::printf("%d frames (%s): render p50 %.1f ms, p99 %.1f ms; PNG/video output waited %.2f s in all\n", r.frames,
-              r.renderer.c_str(), 1e3 * rp.p50, 1e3 * rp.p99, r.encodeSeconds);
+  std::printf("%d frames %dx%d (%s): render p50 %.1f ms, p99 %.1f ms; PNG encode p50 %.1f ms, p99 %.1f ms "
+              "(worker thread); the loop waited %.2f s in all for output\n",
+              r.frames, r.width, r.height, r.renderer.c_str(), 1e3 * rp.p50, 1e3 * rp.p99, 1e3 * r.pngEncode.p50,
+              1e3 * r.pngEncode.p99, r.encodeSeconds);
 }
 
 struct RenderArgs {

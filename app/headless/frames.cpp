@@ -27,6 +27,8 @@ render::CameraMode cameraMode(const std::string& name) {
 
 FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   FramesResult r;
+  r.width = opt.width;
+  r.height = opt.height;
   render::Scene scene(sceneConfigFor(session));
   for (const std::string& w : scene.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.setCamera(cameraMode(opt.camera));
@@ -70,7 +72,10 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     r.stats.tick(0, lastStep, false);
   }
   const auto t1 = Clock::now();
-  if (pngs) pngs->flush();
+  if (pngs) {
+    pngs->flush();
+    r.pngEncode = percentiles(pngs->encodeSeconds());
+  }
   if (video) video->close();
   r.encodeSeconds += seconds(Clock::now() - t1);
   return r;

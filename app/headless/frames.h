@@ -20,8 +20,10 @@ struct FramesOptions {
 
 struct FramesResult {
   int frames = 0;
+  int width = 0, height = 0;
   LoopStats stats;           // render time per frame (frame()), physics per tick (tick())
-  double encodeSeconds = 0;  // waiting for PNG / video output
+  double encodeSeconds = 0;  // the render loop waiting for PNG / video output
+  Percentiles pngEncode;     // encoding + writing one PNG (worker thread, overlaps rendering)
   std::string renderer;      // GL_RENDERER
 };
 

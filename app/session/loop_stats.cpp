@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sys/resource.h>
 
 namespace bdfcar::app {
 
@@ -26,12 +27,17 @@ void LoopStats::frame(double renderSeconds) { render_.push_back(renderSeconds); 
 
 std::string LoopStats::summary() const {
   const Percentiles t = tickPeriod(), ph = physics(), r = render();
-  char buf[512];
+  // The process's peak resident set (the goal: under 250 MB while driving).
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peakMb = usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+  char buf[640];
   std::snprintf(buf, sizeof buf,
                 "loop: %ld ticks, tick period p50 %.3f ms, p99 %.3f ms, max %.3f ms, %ld overruns\n"
-                "      physics per tick p50 %.1f us, p99 %.1f us; render per frame p50 %.2f ms, p99 %.2f ms (%zu frames)",
+                "      physics per tick p50 %.1f us, p99 %.1f us; render per frame p50 %.2f ms, p99 %.2f ms (%zu frames)\n"
+                "      peak resident memory %.0f MB",
                 ticks(), 1e3 * t.p50, 1e3 * t.p99, 1e3 * t.max, overruns_, 1e6 * ph.p50, 1e6 * ph.p99, 1e3 * r.p50,
-                1e3 * r.p99, render_.size());
+                1e3 * r.p99, render_.size(), peakMb);
   return buf;
 }
 

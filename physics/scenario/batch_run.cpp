@@ -30,6 +30,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   int lastIterations = 0;
   double lastCorrection = 0;
   auto record = [&] {
+    if (!options.sample) return;
     const vehicle::VehicleSample s = sim.sample();
     const DriverInput in = sim.lastInput();
     TelemetryInputs ti{sim.steerAt(s.t), in.throttle, in.brake, lastIterations, lastCorrection};

@@ -32,6 +32,7 @@ struct RunResult {
 struct RunOptions {
   std::string telemetryPath;        // empty: no file
   bool keepSamples = true;
+  bool sample = true;               // false: no samples at all (timing the steps alone)
   // Called after each recorded sample (e.g. a course judge).
   std::function<void(const vehicle::VehicleSample&)> onSample;
 };

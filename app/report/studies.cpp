@@ -1,0 +1,101 @@
+#include "report/studies.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace bdfcar::app {
+
+std::vector<double> column(const std::vector<vehicle::VehicleSample>& s, const std::string& name) {
+  std::vector<double> out;
+  for (const auto& x : s) {
+    if (name == "t") out.push_back(x.t);
+    else if (name == "yawrate") out.push_back(x.yawRate);
+    else if (name == "ay") out.push_back(x.ay);
+    else if (name == "roll") out.push_back(x.roll);
+    else if (name == "z") out.push_back(x.com.z());
+    else if (name == "y") out.push_back(x.com.y());
+    else if (name == "FzFL") out.push_back(x.Fz[0]);
+    else throw std::logic_error("unknown column " + name);
+  }
+  if (name == "z" && !out.empty()) {
+    const double z0 = out.front();
+    for (double& v : out) v -= z0;  // dz_com
+  }
+  return out;
+}
+
+Difference compareAt(const std::vector<double>& refT, const std::vector<double>& ref, const std::vector<double>& runT,
+                     const std::vector<double>& run) {
+  Difference d;
+  double peak = 0, sum = 0;
+  for (double v : ref) peak = std::max(peak, std::abs(v));
+  size_t n = 0, j = 0;
+  for (size_t i = 0; i < run.size() && i < runT.size(); ++i) {
+    const double t = runT[i];
+    if (refT.empty() || t < refT.front() - 1e-9 || t > refT.back() + 1e-9) continue;
+    while (j + 1 < refT.size() && refT[j + 1] <= t) ++j;
+    double r = ref[j];
+    if (j + 1 < refT.size() && refT[j + 1] > refT[j])
+      r += (ref[j + 1] - ref[j]) * std::clamp((t - refT[j]) / (refT[j + 1] - refT[j]), 0.0, 1.0);
+    const double e = run[i] - r;
+    sum += e * e;
+    d.maxAbs = std::max(d.maxAbs, std::abs(e));
+    ++n;
+  }
+  d.rmsPercent = n && peak > 0 ? 100.0 * std::sqrt(sum / static_cast<double>(n)) / peak : 0.0;
+  return d;
+}
+
+RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
+  RunSummary s;
+  std::vector<double> perStep;
+  for (int i = 0; i < repeats; ++i) {
+    scenario::Simulation sim(spec);
+    scenario::RunOptions o;
+    o.keepSamples = i + 1 == repeats;
+    s.result = scenario::runScenario(sim, o);
+    if (!s.result.ok) break;
+    perStep.push_back(1e6 * s.result.wallSeconds / std::max(1L, s.result.steps));
+  }
+  if (!perStep.empty()) {
+    std::sort(perStep.begin(), perStep.end());
+    s.wallPerStepUs = perStep[perStep.size() / 2];
+  }
+  return s;
+}
+
+scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,
+                                      int newton, int jacobianEvery, bool refresh) {
+  s.integrator.method = m;
+  s.integrator.step = step;
+  s.integrator.order = order;
+  s.integrator.newtonIterations = newton;
+  s.integrator.jacobianEvery = jacobianEvery;
+  s.integrator.refreshWhenNotContracting = refresh;
+  return s;
+}
+
+std::vector<double> csvColumn(const std::string& path, const std::string& name) {
+  std::ifstream f(path);
+  if (!f) throw std::runtime_error(path + ": cannot open");
+  std::string line;
+  std::getline(f, line);
+  std::stringstream h(line);
+  int index = -1, i = 0;
+  for (std::string c; std::getline(h, c, ','); ++i)
+    if (c == name) index = i;
+  if (index < 0) throw std::runtime_error(path + ": no column " + name);
+  std::vector<double> out;
+  while (std::getline(f, line)) {
+    std::stringstream r(line);
+    std::string cell;
+    for (int k = 0; k <= index; ++k) std::getline(r, cell, ',');
+    out.push_back(std::stod(cell));
+  }
+  return out;
+}
+
+}  // namespace bdfcar::app

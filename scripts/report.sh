@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Regenerates docs/RESULTS.md from the code as it is: the physics sections
+# (`bdfcar report`), then Google Benchmark medians, headless frame times and
+# the interactive loop's statistics. A long study (about 10 minutes), not a
+# test: run it on a quiet machine after changes to the physics or the loop.
+#
+#   BDFCAR_REPEATS        runs / benchmark repetitions per timing (default 5)
+#   BDFCAR_DRIVE_SECONDS  wall time of the interactive loop run (default 60;
+#                         600 for the issue's 10-minute goal)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BDFCAR_BUILD_DIR:-$root/build}
+repeats=${BDFCAR_REPEATS:-5}
+drive_seconds=${BDFCAR_DRIVE_SECONDS:-60}
+"$root/scripts/build.sh" > /dev/null
+cd "$root"
+out=docs/RESULTS.md
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$build/app/bdfcar" report --out "$out" --repeats "$repeats"
+
+# The median rows of a Google Benchmark CSV as a Markdown table: name, real
+# time, and every user counter (the integrator's split) that the row has.
+bench_table() {
+  "$build/tests/$1" --benchmark_repetitions="$repeats" --benchmark_report_aggregates_only=true \
+    --benchmark_format=csv 2> /dev/null | awk -F, '
+    /^name,/ { for (i = 1; i <= NF; i++) col[i] = $i; n = NF; header = 1; next }
+    !header { next }
+    $1 ~ /_median"?$/ {
+      name = $1; gsub(/"/, "", name); sub(/_median$/, "", name); sub(/\/iterations:[0-9]+/, "", name)
+      extra = ""
+      for (i = 11; i <= n; i++) if ($i != "") extra = extra sprintf(" %s %.2f;", col[i], $i)
+      printf "| %s | %.2f %s |%s |\n", name, $3, $5, extra
+    }
+    $1 ~ /^"?BM_/ && $9 == "true" { name = $1; gsub(/"/, "", name); printf "| %s | error: %s | |\n", name, $10 }'
+}
+
+{
+  echo "## 6. Micro-benchmarks (Google Benchmark, median of $repeats repetitions)"
+  echo
+  echo "One 10 ms step at the paper's setting (BDF2, 2 Newton iterations, Jacobian every 200 steps) through"
+  echo "the lane change at 80 km/h, tyres and terrain rays included: Plane = an analytic plane made in"
+  echo "code, FlatRoad = flat.toml (an analytic plane read from the file), MeshRoad = curb.toml (a Bullet"
+  echo "triangle mesh, one ray per wheel per step)."
+  echo "Counters: the integrator's split per step (us). Command: \`build/tests/bench_vehicle\`."
+  echo
+  echo "| benchmark | real time (median) | split |"
+  echo "|---|---|---|"
+  bench_table bench_vehicle
+  echo
+  echo "The multibody core alone (\`build/tests/bench_core\`) and the terrain rays (\`build/tests/bench_terrain\`):"
+  echo
+  echo "| benchmark | real time (median) | counters |"
+  echo "|---|---|---|"
+  bench_table bench_core
+  bench_table bench_terrain
+  echo
+} >> "$out"
+
+{
+  echo "## 7. Headless rendering (OSMesa, no display server)"
+  echo
+  echo "The ISO 3888-1 lane change at 1280x720, 30 frames per simulated second, chase camera; rendering"
+  echo "on the main thread, PNG encoding on a worker thread (so the two overlap)."
+  echo "Command: \`env -u DISPLAY build/app/bdfcar render assets/scenarios/iso_lane_change.toml --out frames\`."
+  echo
+  echo '```'
+  env -u DISPLAY -u WAYLAND_DISPLAY "$build/app/bdfcar-headless" render assets/scenarios/iso_lane_change.toml \
+    --out "$tmp/frames" --size 1280x720 2>&1 | tail -n 1
+  echo '```'
+  echo
+} >> "$out"
+
+{
+  echo "## 8. The interactive loop"
+  echo
+  echo "\`bdfcar drive\` with paper.toml at the paper's setting, keyboard idle (the car rolls on), for"
+  echo "$drive_seconds s of wall time; tick period, physics per tick, render per frame, peak resident memory."
+  echo "Command: \`build/app/bdfcar drive --vehicle assets/vehicles/paper.toml --seconds $drive_seconds\`"
+  echo "(under \`xvfb-run -a -s '-screen 0 1280x720x24'\` when there is no display: software GL)."
+  echo
+  echo '```'
+  drive=("$build/app/bdfcar" drive --vehicle assets/vehicles/paper.toml --seconds "$drive_seconds" --size 1280x720)
+  if [ -n "${DISPLAY:-}" ]; then
+    "${drive[@]}" 2>&1 | grep -A3 '^loop:' || echo "(the drive did not report loop statistics)"
+  elif command -v xvfb-run > /dev/null; then
+    xvfb-run -a -s '-screen 0 1280x720x24' "${drive[@]}" 2>&1 | grep -A3 '^loop:' ||
+      echo "(the drive did not report loop statistics)"
+  else
+    echo "(skipped: no display and no xvfb-run)"
+  fi
+  echo '```'
+  echo
+  echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared VM."
+} >> "$out"
+echo "wrote $out"
