@@ -21,6 +21,9 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
   scenario::RunOptions opt;
   opt.telemetryPath = out;
   opt.keepSamples = false;
+  // Without a telemetry file (and no course to judge) nothing is sampled:
+  // the printed time per step is then the step alone.
+  opt.sample = !out.empty() || sim.course().has_value();
   const scenario::RunResult r = scenario::runScenario(sim, opt);
   if (!r.ok) {
     std::fprintf(stderr, "error: %s: the run failed at t = %.3f s: %s\n", path.c_str(), r.failureTime, r.failure.c_str());
@@ -51,7 +54,7 @@ void addRunCommand(CLI::App& app, CommandList& commands) {
   auto out = std::make_shared<std::string>();
   auto ov = std::make_shared<ScenarioOverrides>();
   cmd->add_option("scenario", *path, "Scenario file (assets/scenarios/*.toml)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--out,-o", *out, "Telemetry CSV to write");
+  cmd->add_option("--out,-o", *out, "Telemetry CSV to write (without it the steps alone are timed)");
   addOverrideOptions(*cmd, *ov);
   commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *ov); }); }});
 }

@@ -23,17 +23,17 @@ trap 'rm -rf "$tmp"' EXIT
 # The median rows of a Google Benchmark CSV as a Markdown table: name, real
 # time, and every user counter (the integrator's split) that the row has.
 bench_table() {
+  # Console format: the CSV reporter aborts when benchmarks carry different counters.
   "$build/tests/$1" --benchmark_repetitions="$repeats" --benchmark_report_aggregates_only=true \
-    --benchmark_format=csv 2> /dev/null | awk -F, '
-    /^name,/ { for (i = 1; i <= NF; i++) col[i] = $i; n = NF; header = 1; next }
-    !header { next }
-    $1 ~ /_median"?$/ {
-      name = $1; gsub(/"/, "", name); sub(/_median$/, "", name); sub(/\/iterations:[0-9]+/, "", name)
+    --benchmark_color=false 2> /dev/null | awk '
+    $1 ~ /_median$/ {
+      name = $1; sub(/_median$/, "", name); sub(/\/iterations:[0-9]+/, "", name)
       extra = ""
-      for (i = 11; i <= n; i++) if ($i != "") extra = extra sprintf(" %s %.2f;", col[i], $i)
-      printf "| %s | %.2f %s |%s |\n", name, $3, $5, extra
+      for (i = 7; i <= NF; i++) { split($i, kv, "="); extra = extra sprintf(" %s %.2f;", kv[1], kv[2]) }
+      printf "| %s | %s %s |%s |\n", name, $2, $3, extra
     }
-    $1 ~ /^"?BM_/ && $9 == "true" { name = $1; gsub(/"/, "", name); printf "| %s | error: %s | |\n", name, $10 }'
+    /ERROR OCCURRED/ { name = $1; sub(/\/iterations:[0-9]+/, "", name); sub(/.*ERROR OCCURRED: /, ""); printf "| %s | error: %s | |\n", name, $0 }' |
+    sort -u
 }
 
 {
@@ -49,12 +49,55 @@ bench_table() {
   echo "|---|---|---|"
   bench_table bench_vehicle
   echo
-  echo "The multibody core alone (\`build/tests/bench_core\`) and the terrain rays (\`build/tests/bench_terrain\`):"
+  echo "The multibody core alone on a mechanism of the paper car's size (25 coordinates, 14 constraint"
+  echo "equations; \`build/tests/bench_core\`: residual, Jacobian by finite differences + LU, LU alone, one"
+  echo "step with its split) and the terrain rays (\`build/tests/bench_terrain\`):"
   echo
   echo "| benchmark | real time (median) | counters |"
   echo "|---|---|---|"
   bench_table bench_core
   bench_table bench_terrain
+  echo
+} >> "$out"
+
+{
+  echo "## 6b. Instructions per step (callgrind: steadier than seconds on a shared VM)"
+  echo
+  if command -v valgrind > /dev/null; then
+    echo "J-turn at the paper's setting, no telemetry: instructions of a 6 s run minus those of a 1 s run,"
+    echo "over the 500 steps between. Command: \`valgrind --tool=callgrind build/app/bdfcar run"
+    echo "assets/scenarios/jturn.toml --vehicle assets/vehicles/paper.toml --duration 6\` (and 1)."
+    echo
+    echo "| vehicle | instructions per 10 ms step |"
+    echo "|---|---|"
+    for v in paper sedan; do
+      ir() {
+        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$1" "$build/app/bdfcar" run \
+          assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --duration "$1" 2>&1 |
+          awk '/Collected/ { print $4 }'
+      }
+      echo "| $v.toml | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
+    done
+    echo
+    echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"
+    echo "BdfIntegrator::step over the run, settling included; \`--toggle-collect\` on that function):"
+    echo
+    valgrind --tool=callgrind --collect-atstart=no "--toggle-collect=bdfcar::integ::BdfIntegrator::step(*" \
+      --callgrind-out-file="$tmp/cg.step" "$build/app/bdfcar" run assets/scenarios/jturn.toml \
+      --vehicle assets/vehicles/paper.toml --duration 6 > /dev/null 2>&1
+    echo "| function | share of the step |"
+    echo "|---|---|"
+    callgrind_annotate --inclusive=yes "$tmp/cg.step" 2> /dev/null |
+      sed -nE 's/^ *[0-9,]+ \( *([0-9.]+%)\) *[^:]*:([^(<]*)[(<].*/\2 \1/p' | awk '!seen[$1]++' |
+      grep -E '::(newton|residual|applyForces|VehicleForces::apply|FialaTyre::evaluate|applySprings|updatePositions|updateVelocities|updateAccelerations|inverseDynamics|constraintResiduals|applyConstraintWrenches|general_matrix_vector_product|evaluateJacobian|MultibodyDae::retract) ' |
+      awk '{ printf "| %s | %s |\n", $1, $2 }'
+    echo
+    echo "general_matrix_vector_product is the back-substitution: products with the stored inverse of"
+    echo "the eq. 3.8 matrix and with the Jacobian blocks; evaluateJacobian (finite differences of the"
+    echo "residual, every 200 steps) is amortised; the rest of newton is the residual."
+  else
+    echo "(skipped: valgrind is not installed)"
+  fi
   echo
 } >> "$out"
 
