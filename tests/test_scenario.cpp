@@ -10,6 +10,7 @@
 
 #include "config/toml_reader.h"
 #include "scenario/batch_run.h"
+#include "scenario/hard_cases.h"
 #include "scenario/scenario_spec.h"
 
 using namespace bdfcar;
@@ -136,51 +137,14 @@ TEST(Standstill, BrakingToAStopEndsAtRestWithoutJitter) {
 }
 
 TEST(HardCases, CurbStrikeJumpRoughRoadSpinOutAndLargeSteps) {
-  struct Case {
-    const char* name;
-    std::function<void(scenario::ScenarioSpec&)> edit;
-  };
-  const std::vector<Case> cases = {
-      {"curb strike at 30 km/h",
-       [](scenario::ScenarioSpec& s) {
-         s.terrainFile = asset("terrain/curb.toml");
-         s.raysPerWheel = 5;
-         s.startY = -1.75;
-         s.initialSpeed = s.speedControl.target = 30 / 3.6;
-         s.steering = {};
-         s.duration = 4.0;
-         s.settleTime = 0.5;
-       }},
-      {"jump off the ramp at 50 km/h",
-       [](scenario::ScenarioSpec& s) {
-         s.terrainFile = asset("terrain/ramp.toml");
-         s.raysPerWheel = 5;
-         s.startX = 20;
-         s.initialSpeed = s.speedControl.target = 50 / 3.6;
-         s.steering = {};
-         s.duration = 4.0;
-         s.settleTime = 0.5;
-       }},
-      {"rough road at 60 km/h",
-       [](scenario::ScenarioSpec& s) {
-         s.terrainFile = asset("terrain/rough.toml");
-         s.raysPerWheel = 3;
-         s.initialSpeed = s.speedControl.target = 60 / 3.6;
-         s.steering = {};
-         s.duration = 6.0;
-         s.settleTime = 0.5;
-       }},
-      {"spin-out: full lock at 80 km/h",
-       [](scenario::ScenarioSpec& s) {
-         s.steering.level = 1.0;
-         s.speedControl.enabled = false;
-         s.duration = 5.0;
-       }},
-      {"20 ms steps", [](scenario::ScenarioSpec& s) { s.integrator.step = 0.02; }},
-      {"50 ms steps", [](scenario::ScenarioSpec& s) { s.integrator.step = 0.05; }},
-  };
-  for (const Case& c : cases) {
-    scenario::ScenarioSpec s = jturn();
+  // The shared list (also in docs/RESULTS.md, 4b) and two large steps.
+  std::vector<scenario::HardCase> cases = scenario::hardCases(std::string(BDFCAR_SOURCE_DIR) + "/assets");
+  cases.push_back({"20 ms steps", "jturn.toml", "step = 20 ms",
+                   [](scenario::ScenarioSpec& s) { s.integrator.step = 0.02; }});
+  cases.push_back({"50 ms steps", "jturn.toml", "step = 50 ms",
+                   [](scenario::ScenarioSpec& s) { s.integrator.step = 0.05; }});
+  for (const scenario::HardCase& c : cases) {
+    scenario::ScenarioSpec s = scenario::loadScenarioFile(asset("scenarios/" + c.scenarioFile));
     c.edit(s);
     scenario::Simulation sim(s);
     const scenario::RunResult r = scenario::runScenario(sim, {});

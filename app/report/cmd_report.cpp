@@ -28,37 +28,6 @@ struct ReportArgs {
   int repeats = 5;
 };
 
-std::string asset(const std::string& rel) { return std::string(BDFCAR_ASSET_DIR) + "/" + rel; }
-
-scenario::ScenarioSpec scenarioWith(const std::string& file, const std::string& vehicle) {
-  scenario::ScenarioSpec s = scenario::loadScenarioFile(asset("scenarios/" + file));
-  s.vehicleFile = asset("vehicles/" + vehicle);
-  return s;
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-// A converged run of the project's own model: 1 ms, Newton to tolerance, Jacobian every step.
-scenario::RunResult converged(const scenario::ScenarioSpec& s) {
-  scenario::Simulation sim(withIntegrator(s, IntegratorMethod::Bdf, 0.001, 2, 0, 1));
-  return scenario::runScenario(sim, {});
-}
-
-// A diverged run as a table cell: when, and whether it was still settling.
-std::string divergedCell(const scenario::RunResult& r) {
-  return r.failureTime < 0 ? "diverged while settling (t = " + fmt("%.2f s", r.failureTime) + ")"
-                           : "diverged at t = " + fmt("%.2f s", r.failureTime);
-}
-
-// The command line that reproduces one run of a section.
-void command(std::ostream& md, const std::string& args) {
-  md << "Command (one run): `bdfcar run " << args << " --out run.csv`\n\n";
-}
-
 void writePlot(const std::string& dataPath, const std::string& png, const std::string& script) {
   std::ofstream g(png + ".gp");
   g << "set datafile separator ','\nset terminal pngcairo size 1200,800 font ',11'\nset output '" << png << "'\n"
@@ -313,6 +282,8 @@ int runReport(const ReportArgs& a) {
   gridSection(md);
   std::printf("report: implicit vs explicit...\n");
   explicitSection(md, a);
+  std::printf("report: hard cases...\n");
+  hardCasesSection(md, a.repeats);
   std::printf("report: speed...\n");
   speedSection(md, a);
   std::ofstream f(out);

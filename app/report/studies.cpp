@@ -1,6 +1,7 @@
 #include "report/studies.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -45,7 +46,8 @@ Difference compareAt(const std::vector<double>& refT, const std::vector<double>&
     d.maxAbs = std::max(d.maxAbs, std::abs(e));
     ++n;
   }
-  d.rmsPercent = n && peak > 0 ? 100.0 * std::sqrt(sum / static_cast<double>(n)) / peak : 0.0;
+  d.rms = n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+  d.rmsPercent = peak > 0 ? 100.0 * d.rms / peak : 0.0;
   return d;
 }
 
@@ -96,6 +98,34 @@ std::vector<double> csvColumn(const std::string& path, const std::string& name) 
     out.push_back(std::stod(cell));
   }
   return out;
+}
+
+std::string asset(const std::string& rel) { return std::string(BDFCAR_ASSET_DIR) + "/" + rel; }
+
+scenario::ScenarioSpec scenarioWith(const std::string& scenarioFile, const std::string& vehicleFile) {
+  scenario::ScenarioSpec s = scenario::loadScenarioFile(asset("scenarios/" + scenarioFile));
+  s.vehicleFile = asset("vehicles/" + vehicleFile);
+  return s;
+}
+
+std::string fmt(const char* format, double value) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, value);
+  return b;
+}
+
+scenario::RunResult converged(const scenario::ScenarioSpec& s) {
+  scenario::Simulation sim(withIntegrator(s, scenario::IntegratorMethod::Bdf, 0.001, 2, 0, 1));
+  return scenario::runScenario(sim, {});
+}
+
+std::string divergedCell(const scenario::RunResult& r) {
+  return r.failureTime < 0 ? "diverged while settling (t = " + fmt("%.2f s", r.failureTime) + ")"
+                           : "diverged at t = " + fmt("%.2f s", r.failureTime);
+}
+
+void command(std::ostream& md, const std::string& args) {
+  md << "Command (one run): `bdfcar run " << args << " --out run.csv`\n\n";
 }
 
 }  // namespace bdfcar::app

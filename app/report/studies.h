@@ -3,6 +3,7 @@
 // with the project's own converged runs.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ std::vector<double> column(const std::vector<vehicle::VehicleSample>& s, const s
 
 struct Difference {
   double rmsPercent = 0;  // RMS difference as % of the reference's peak |value|
+  double rms = 0;         // RMS difference in the quantity's units
   double maxAbs = 0;
 };
 // Compares a run with a reference at the run's sample times (the reference
@@ -33,6 +35,26 @@ RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats);
 
 scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,
                                       int newton, int jacobianEvery, bool refresh = true);
+
+// Paths under assets/ (BDFCAR_ASSET_DIR): a scenario with a chosen vehicle file.
+std::string asset(const std::string& rel);
+scenario::ScenarioSpec scenarioWith(const std::string& scenarioFile, const std::string& vehicleFile);
+
+// printf-formatted number for the tables.
+std::string fmt(const char* format, double value);
+
+// A converged run of the project's own model: 1 ms, Newton to tolerance, Jacobian every step.
+scenario::RunResult converged(const scenario::ScenarioSpec& s);
+
+// A diverged run as a table cell: when, and whether it was still settling.
+std::string divergedCell(const scenario::RunResult& r);
+
+// The command line that reproduces one run of a section.
+void command(std::ostream& md, const std::string& args);
+
+// Section of RESULTS.md: the default Newton policy against the paper's on
+// hard cases (rough road, curb, jump, large steps): cost and error.
+void hardCasesSection(std::ostream& md, int repeats);
 
 // Reference telemetry columns read from a CSV with a header.
 std::vector<double> csvColumn(const std::string& path, const std::string& name);
