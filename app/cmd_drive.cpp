@@ -16,7 +16,7 @@ namespace {
 
 struct DriveArgs {
   std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive.toml";
-  std::string record, replay, telemetry, screenshot, size = "1280x720";
+  std::string record, replay, telemetry, screenshot, mappings, size = "1280x720";
   double seconds = 0;
   bool batch = false, noVsync = false;
   ScenarioOverrides overrides;
@@ -30,15 +30,19 @@ int runDrive(const DriveArgs& a) {
   SessionOptions so;
   so.telemetryPath = a.telemetry;
   so.recordPath = a.record;
+  so.rewindable = true;  // rewind, and a divergence goes back to the last good snapshot
   DriveSession session(spec, so);
   if (replay && a.batch) {
     // As fast as possible, no window: the same inputs give the same bits.
-    for (const scenario::DriverInput& in : replay->inputs)
-      if (!session.tick(in)) break;
+    for (const RecordedTick& e : replay->entries)
+      if (!session.replay(e)) break;
+    std::printf("replayed %ld ticks to t = %.3f s (%d steps of %g s per %g ms tick)\n", replay->inputCount(),
+                session.time(), session.simulation().stepsPerTick(), spec.integrator.step, spec.tick * 1e3);
   } else {
     InteractiveOptions io;
     io.driver = replay ? DriverSource::Replay : DriverSource::Person;
     io.replay = replay.get();
+    io.mappingDir = a.mappings;
     io.seconds = a.seconds;
     io.vsync = !a.noVsync;
     io.screenshot = a.screenshot;
@@ -49,6 +53,9 @@ int runDrive(const DriveArgs& a) {
   if (const auto c = session.courseResult())
     std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course", c->coneHits,
                 c->coneHits == 1 ? "" : "s", c->exitTime >= 0 ? c->exitTime - c->entryTime : -1.0);
+  if (session.resets() > 0)
+    std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s\n", session.resets(),
+                session.resets() == 1 ? "" : "s", session.notice().c_str());
   if (session.failed()) {
     std::fprintf(stderr, "error: %s\n", session.failure().c_str());
     return 3;
@@ -71,6 +78,8 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--size", a->size, "Window size, e.g. 1280x720");
   cmd->add_flag("--no-vsync", a->noVsync, "Do not wait for the display's refresh");
   cmd->add_option("--screenshot", a->screenshot, "Save the last frame as PNG");
+  cmd->add_option("--mappings", a->mappings, "Folder of input mapping files (*.toml; default: the shipped ones)")
+      ->check(CLI::ExistingDirectory);
   addOverrideOptions(*cmd, a->overrides);
   commands.push_back({cmd, [a] { return reportErrors([&] { return runDrive(*a); }); }});
 }

@@ -6,7 +6,7 @@
 
 #include "cli_errors.h"
 #include "commands.h"
-#include "scenario/batch_run.h"
+#include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 #include "scenario_overrides.h"
 

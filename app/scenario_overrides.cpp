@@ -1,5 +1,6 @@
 #include "scenario_overrides.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -7,6 +8,8 @@ namespace bdfcar::app {
 
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--step", ov.step, "Integration step, s")->check(CLI::Range(1e-6, 0.1));
+  cmd.add_option("--tick", ov.tick, "The driver's input period, s (default: the scenario's, 10 ms); a whole number of steps")
+      ->check(CLI::Range(1e-3, 0.1));
   cmd.add_option("--integrator", ov.integrator, "bdf, rk4 or euler")->check(CLI::IsMember({"bdf", "rk4", "euler"}));
   cmd.add_option("--order", ov.order, "BDF order")->check(CLI::Range(1, 5));
   cmd.add_option("--newton", ov.newton, "Newton iterations per step (0 = iterate to tolerance)")->check(CLI::Range(0, 50));
@@ -22,18 +25,28 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
 
 void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   auto& it = spec.integrator;
+  integ::BdfOptions& bdf = it.bdf;
   if (ov.step) it.step = *ov.step;
+  if (ov.tick) spec.tick = *ov.tick;
   if (ov.integrator)
     it.method = *ov.integrator == "bdf" ? scenario::IntegratorMethod::Bdf
                 : *ov.integrator == "rk4" ? scenario::IntegratorMethod::Rk4
                                           : scenario::IntegratorMethod::SemiImplicitEuler;
-  if (ov.order) it.order = *ov.order;
-  if (ov.newton) it.newtonIterations = *ov.newton;
-  if (ov.jacobianEvery) it.jacobianEvery = *ov.jacobianEvery;
+  if (ov.order) bdf.order = *ov.order;
+  if (ov.newton) bdf.newtonIterations = *ov.newton;
+  if (ov.jacobianEvery) bdf.jacobianEvery = *ov.jacobianEvery;
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
   if (ov.settle) spec.settleTime = *ov.settle;
-  if (ov.asPublished) it.refreshWhenNotContracting = false;
+  if (ov.asPublished) bdf.refreshWhenNotContracting = false;
+  if (scenario::stepsPerTick(spec.tick, it.step) == 0) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "--step %g s does not divide the driver's tick of %g ms (%s): each tick runs a whole number of "
+                  "steps (e.g. --step %g or %g, or give --tick a multiple of the step)",
+                  it.step, spec.tick * 1e3, spec.sourceFile.c_str(), spec.tick, spec.tick / 2);
+    throw std::runtime_error(text);
+  }
 }
 
 }  // namespace bdfcar::app

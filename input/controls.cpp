@@ -14,6 +14,7 @@ bool& actionFlag(Controls& controls, Action action) {
     case Action::View: return controls.view;
     case Action::Record: return controls.record;
     case Action::Quit: return controls.quit;
+    case Action::Rewind: return controls.rewind;
   }
   return controls.quit;  // unreachable: the switch covers the enum
 }
@@ -26,7 +27,7 @@ bool actionFlag(const Controls& controls, Action action) {
 // Mapping-file names, in enum order.
 constexpr std::string_view kAxisNames[kAxisCount] = {"steering", "throttle", "brake", "clutch"};
 constexpr std::string_view kActionNames[kActionCount] = {"gear_up", "gear_down", "reset",  "pause",
-                                                         "single_step", "camera", "view", "record", "quit"};
+                                                         "single_step", "camera", "view", "record", "quit", "rewind"};
 constexpr std::string_view kDeviceKindNames[] = {"keyboard", "wheel", "gamecontroller", "joystick"};
 
 // Mapping-file name of an analog control.

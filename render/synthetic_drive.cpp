@@ -10,13 +10,13 @@ namespace {
 using Eigen::Vector3d;
 using vehicle::LinkKind;
 
-constexpr double kRideHeight = 0.5128;           // chassis reference point above ground (sedan.md s.10)
+constexpr double kRideHeight = 0.5128;           // chassis origin above ground (docs/reference-vehicle.md 10)
 constexpr double kWheelbase = 2.46, kRadius = 0.3099;
-constexpr double kSteeringRatio = 2.2;           // pinion angle / road-wheel angle (sedan.md s.6)
+constexpr double kSteeringRatio = 2.2;           // pinion / road-wheel angle (docs/reference-vehicle.md 6)
 constexpr double kRollPerAccel = 0.0045;         // rad of body roll per m/s^2 of lateral acceleration
 
 struct Member {
-  Vector3d chassisEnd, uprightEnd;  // left side, chassis frame (sedan.md s.4.1, s.5.1)
+  Vector3d chassisEnd, uprightEnd;  // left side, chassis frame (docs/reference-vehicle.md 4.1, 5.1)
   LinkKind kind;
   double radius;
 };

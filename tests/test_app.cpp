@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "input/input_system.h"
-#include "scenario/batch_run.h"
+#include "scenario/run.h"
 #include "session/drive_session.h"
 
 using namespace bdfcar;
@@ -45,12 +45,12 @@ TEST(Replay, ARecordedDriveReplaysToIdenticalTelemetry) {
     }
   }
   const app::Recording r = app::readRecording(rec);
-  EXPECT_EQ(r.inputs.size(), 300u);
+  EXPECT_EQ(r.inputCount(), 300);
   {
     app::SessionOptions o;
     o.telemetryPath = b;
     app::DriveSession replay(spec, o);
-    for (const auto& in : r.inputs) ASSERT_TRUE(replay.tick(in));
+    for (const auto& e : r.entries) ASSERT_TRUE(replay.replay(e));
   }
   const std::string ta = readFile(a), tb = readFile(b);
   EXPECT_GT(ta.size(), 20000u);

@@ -60,6 +60,7 @@ TEST(CrossCheck, BdfAgreesWithSundialsIdaOnFourBarUnderGravity) {
   o.order = 3;
   o.newtonIterations = 0;
   o.atol = 1e-13;
+  o.jacobianEvery = 1;
   o.rtol = 1e-11;
   integ::Message msg;
   Vec a0, lam0;

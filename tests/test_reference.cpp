@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "reference_data.h"
-#include "scenario/batch_run.h"
+#include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 
 using namespace bdfcar;
@@ -36,8 +36,8 @@ JTurnRun runJTurnWith(double step, int newton, int jacobianEvery, const std::str
   s.vehicleFile = source("assets/vehicles/" + vehicle);
   s.integrator.method = method;
   s.integrator.step = step;
-  s.integrator.newtonIterations = newton;
-  s.integrator.jacobianEvery = jacobianEvery;
+  s.integrator.bdf.newtonIterations = newton;
+  s.integrator.bdf.jacobianEvery = jacobianEvery;
   scenario::Simulation sim(s);
   JTurnRun run{scenario::runScenario(sim, {}), {}};
   if (!run.result.ok) return run;

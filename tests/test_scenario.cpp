@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "config/toml_reader.h"
-#include "scenario/batch_run.h"
+#include "scenario/run.h"
 #include "scenario/hard_cases.h"
 #include "scenario/scenario_spec.h"
 
@@ -140,9 +140,9 @@ TEST(HardCases, CurbStrikeJumpRoughRoadSpinOutAndLargeSteps) {
   // The shared list (also in docs/RESULTS.md, 4b) and two large steps.
   std::vector<scenario::HardCase> cases = scenario::hardCases(std::string(BDFCAR_SOURCE_DIR) + "/assets");
   cases.push_back({"20 ms steps", "jturn.toml", "step = 20 ms",
-                   [](scenario::ScenarioSpec& s) { s.integrator.step = 0.02; }});
+                   [](scenario::ScenarioSpec& s) { s.integrator.step = s.tick = 0.02; }});
   cases.push_back({"50 ms steps", "jturn.toml", "step = 50 ms",
-                   [](scenario::ScenarioSpec& s) { s.integrator.step = 0.05; }});
+                   [](scenario::ScenarioSpec& s) { s.integrator.step = s.tick = 0.05; }});
   for (const scenario::HardCase& c : cases) {
     scenario::ScenarioSpec s = scenario::loadScenarioFile(asset("scenarios/" + c.scenarioFile));
     c.edit(s);

@@ -45,7 +45,7 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   const double sim0 = session.time();
   double lastStep = 0;
   double nextFrame = 0.0;  // manoeuvre time of the next frame
-  const double h = session.spec().integrator.step;
+  const double h = session.spec().tick;  // frames fall on driver ticks
   while (true) {
     if (session.time() >= nextFrame - 0.5 * h) {
       const auto t0 = Clock::now();

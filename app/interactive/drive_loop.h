@@ -1,9 +1,8 @@
-// The interactive game loop: physics on a fixed 10 ms tick at absolute
-// deadlines (sleep, then a short spin) with capped catch-up, input polled
-// once per tick, on the main thread (SDL's events belong there); drawing on a
-// render thread at display rate from the latest published state. Pause,
-// single step, reset, camera and view switches, input recording; loop
-// statistics at exit.
+// The interactive game loop: the driver's tick on the wall clock
+// (tick_clock.h), what one tick does (tick_handler.h: devices, commands, one
+// driver tick of the drive), and drawing on its own thread at display rate
+// from the latest published state (draw_thread.h). Simulated time follows
+// wall time whatever the integration step: each tick runs tick / step steps.
 #pragma once
 
 #include <optional>
@@ -18,6 +17,7 @@ namespace bdfcar::app {
 struct InteractiveOptions {
   DriverSource driver = DriverSource::Person;
   const Recording* replay = nullptr;   // with DriverSource::Replay
+  std::string mappingDir;              // input mapping files (empty: the shipped ones)
   double seconds = 0;                  // stop after this much wall time (0 = until quit or the end)
   int width = 1280, height = 720;
   bool vsync = true;

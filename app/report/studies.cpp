@@ -73,10 +73,11 @@ scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::Integr
                                       int newton, int jacobianEvery, bool refresh) {
   s.integrator.method = m;
   s.integrator.step = step;
-  s.integrator.order = order;
-  s.integrator.newtonIterations = newton;
-  s.integrator.jacobianEvery = jacobianEvery;
-  s.integrator.refreshWhenNotContracting = refresh;
+  if (scenario::stepsPerTick(s.tick, step) == 0) s.tick = step;  // steps longer than the driver's tick
+  s.integrator.bdf.order = order;
+  s.integrator.bdf.newtonIterations = newton;
+  s.integrator.bdf.jacobianEvery = jacobianEvery;
+  s.integrator.bdf.refreshWhenNotContracting = refresh;
   return s;
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/batch_run.h"
+#include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 
 namespace bdfcar::app {

@@ -1,61 +1,59 @@
 #include "session/drive_session.h"
 
-#include <cmath>
+#include <algorithm>
+#include <stdexcept>
 
 namespace bdfcar::app {
 
-DriveSession::DriveSession(const scenario::ScenarioSpec& spec, const SessionOptions& options)
-    : spec_(spec), options_(options) {
-  restart();
+DriveSession::DriveSession(const scenario::ScenarioSpec& spec, const SessionOptions& options) : options_(options) {
+  sim_ = std::make_unique<scenario::Simulation>(spec);
+  scenario::RunOptions ro;
+  ro.telemetryPath = options_.telemetryPath;
+  ro.keepSamples = false;
+  ro.rewindable = options_.rewindable;
+  ro.restartable = true;
+  run_ = std::make_unique<scenario::Run>(*sim_, ro);
+  if (run_->failed()) throw std::runtime_error(spec.vehicleFile + ": " + run_->failure());
+  if (!options_.recordPath.empty())
+    recorder_ = std::make_unique<InputRecorder>(options_.recordPath, spec.sourceFile, spec.tick);
+  sample_ = run_->lastSample();
 }
 
+DriveSession::~DriveSession() = default;
+
 void DriveSession::restart() {
-  telemetry_.reset();
-  recorder_.reset();
-  sim_ = std::make_unique<scenario::Simulation>(spec_);
-  sim_->prepare();  // throws on a vehicle that cannot settle
-  if (!options_.telemetryPath.empty())
-    telemetry_ = std::make_unique<scenario::TelemetryWriter>(options_.telemetryPath, sim_->vehicle());
-  if (!options_.recordPath.empty()) recorder_ = std::make_unique<InputRecorder>(options_.recordPath, spec_.sourceFile);
-  judge_.reset();
-  if (sim_->course()) {
-    const auto& g = sim_->vehicle().spec.geometry;
-    judge_.emplace(*sim_->course(), g.length, scenario::vehicleWidth(sim_->vehicle()), g.bodyOffset);
-  }
-  failure_.clear();
-  ticks_ = 0;
-  outputEvery_ = std::max(1L, std::lround(spec_.outputInterval / spec_.integrator.step));
+  run_->restart();
+  if (recorder_) recorder_->record({RecordedTick::Kind::Reset, {}});
   sample_ = sim_->sample();
-  record();
+}
+
+bool DriveSession::rewind() {
+  if (!run_->rewind()) return false;
+  if (recorder_) recorder_->record({RecordedTick::Kind::Rewind, {}});
+  sample_ = sim_->sample();
+  return true;
 }
 
 void DriveSession::startRecording(const std::string& path) {
+  recorder_.reset();
+  run_->restart();
   options_.recordPath = path;
-  restart();
-}
-
-void DriveSession::record() {
-  if (judge_) judge_->update(sample_);
-  if (telemetry_) {
-    const scenario::DriverInput in = sim_->lastInput();
-    telemetry_->write(sample_, {sim_->steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_});
-  }
+  recorder_ = std::make_unique<InputRecorder>(path, spec().sourceFile, spec().tick);
+  sample_ = sim_->sample();
 }
 
 bool DriveSession::tick(const std::optional<scenario::DriverInput>& input) {
-  if (failed()) return false;
-  if (recorder_ && input) recorder_->record(ticks_, *input);
-  const integ::StepReport rep = input ? sim_->step(*input) : sim_->step();
-  ++ticks_;
-  if (!rep.ok()) {
-    failure_ = "diverged at t = " + std::to_string(time()) + " s: " + rep.message.c_str();
-    return false;
-  }
-  lastIterations_ = rep.iterations;
-  lastCorrection_ = rep.correction;
-  if (ticks_ % outputEvery_ == 0) {
-    sample_ = sim_->sample();
-    record();
+  if (recorder_ && input && !failed() && !finished()) recorder_->record({RecordedTick::Kind::Input, *input});
+  const bool ok = run_->tick(input);
+  sample_ = run_->lastSample();
+  return ok;
+}
+
+bool DriveSession::replay(const RecordedTick& e) {
+  switch (e.kind) {
+    case RecordedTick::Kind::Input: return tick(e.input);
+    case RecordedTick::Kind::Reset: restart(); return true;
+    case RecordedTick::Kind::Rewind: rewind(); return true;
   }
   return true;
 }
@@ -76,18 +74,12 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   h.stepTime = stepSeconds;
   h.throttle = sim_->lastInput().throttle;
   h.brake = sim_->lastInput().brake;
-  if (judge_) {
-    const scenario::CourseResult& c = judge_->result();
-    h.coneHits = c.coneHits;
-    h.courseTime = c.entryTime < 0 ? 0.0 : (c.exitTime >= 0 ? c.exitTime : sample_.t) - c.entryTime;
+  if (const auto c = run_->course()) {
+    h.coneHits = c->coneHits;
+    h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;
   }
-  h.message = failed() ? failure_ : message;
+  h.message = failed() ? failure() : message;
   return h;
-}
-
-const std::optional<scenario::CourseResult> DriveSession::courseResult() const {
-  if (!judge_) return std::nullopt;
-  return judge_->result();
 }
 
 double DriveSession::steeringFeel() const {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes sedan_body.obj: a low-poly passenger-car body for bdfcar's renderer.
 
-Chassis frame of the reference sedan (shared/reference/sedan.md): x forward,
+Chassis frame of the reference sedan (docs/reference-vehicle.md 1): x forward,
 y left, z up, origin at the chassis reference point 0.513 m above the ground;
 wheel centres at x = 1.21 (track 2.2 m) and x = -1.25 (track 1.9 m), about
 0.24 m below the origin, wheel radius 0.31 m. The body is lofted through

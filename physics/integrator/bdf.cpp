@@ -32,16 +32,6 @@ int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std
 
 }  // namespace
 
-const char* stepStatusName(StepStatus s) {
-  switch (s) {
-    case StepStatus::Ok: return "ok";
-    case StepStatus::Diverged: return "diverged";
-    case StepStatus::EvaluationFailed: return "evaluation failed";
-    case StepStatus::StateCheckFailed: return "state check failed";
-  }
-  return "?";
-}
-
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
     : dae_(dae), opt_(options), n_(dae.sizes()), forward_(dae), lu_(n_.nv + n_.nc) {
   opt_.order = std::clamp(opt_.order, 1, kMaxBdfOrder);
@@ -87,6 +77,25 @@ void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
   factorizedHPrime_ = 0;
 }
 
+IntegratorState BdfIntegrator::save() const {
+  IntegratorState s;
+  s.history.reserve(count_);
+  for (int i = 0; i < count_; ++i) s.history.push_back(node(i));
+  s.counters = counters_;
+  s.stepsSinceJacobian = stepsSinceJacobian_;
+  return s;
+}
+
+void BdfIntegrator::restore(const IntegratorState& s) {
+  head_ = 0;
+  count_ = std::clamp(static_cast<int>(s.history.size()), 1, kHistory);
+  for (int i = 0; i < count_; ++i) node(i) = s.history[i];
+  counters_ = s.counters;
+  stepsSinceJacobian_ = s.stepsSinceJacobian;
+  haveBlocks_ = false;  // the Jacobian is re-evaluated at the next step, not copied
+  factorizedHPrime_ = 0;
+}
+
 StepReport BdfIntegrator::step(double h) {
   const bool due = !haveBlocks_ || (opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery);
   const StartUp mode = opt_.startUp == StartUp::Auto ? (opt_.order >= 3 ? StartUp::Substeps : StartUp::OrderRamp)
@@ -112,13 +121,15 @@ StepReport BdfIntegrator::step(double h) {
   return rep;
 }
 
-// A step that Newton cannot converge (a wheel landing, a curb strike) is
-// rejected and taken as two half steps, recursively down to h / 2^kMaxSplits.
-// The history holds node times, so uneven steps are exact BDF steps.
+// A step that Newton cannot converge (a wheel landing, a curb strike), or
+// whose residual failed recoverably (as IDA retries a recoverable residual
+// failure with a smaller step), is rejected and taken as two half steps,
+// recursively down to h / 2^kMaxSplits. The history holds node times, so
+// uneven steps are exact BDF steps.
 StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) {
   StepReport rep = substep(h, jacobianDue);
-  if (rep.ok() || rep.status != StepStatus::Diverged || depth >= kMaxSplits || !opt_.refreshWhenNotContracting)
-    return rep;
+  const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
+  if (rep.ok() || !retry || depth >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
   ++counters_.splits;
   const double tEnd = node(0).t + h;
   rep = splitOnFailure(0.5 * h, false, depth + 1);
@@ -186,6 +197,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     }
     if (st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
+      rep.recoverable = st == EvalStatus::Recoverable;
       return NewtonOutcome::Failed;
     }
     ScopedTimer timer(opt_.timing, timers_.backSubstitution);
@@ -268,8 +280,9 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
   double prev = rep.correction;
   for (int it = 0; it < opt_.maxNewtonIterations; ++it) {
     dae_.retract(node(0).q, d_, q_);
-    if (evaluateJacobian(t, rep.message) != EvalStatus::Ok) {
+    if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
+      rep.recoverable = st == EvalStatus::Recoverable;
       return NewtonOutcome::Failed;
     }
     factorize(c.hPrime);
@@ -341,8 +354,9 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
     lam_ = lamPred_;
     if (jacobianDue || !haveBlocks_) {
       dae_.retract(node(0).q, d_, q_);
-      if (evaluateJacobian(tNew, rep.message) != EvalStatus::Ok) {
+      if (const EvalStatus st = evaluateJacobian(tNew, rep.message); st != EvalStatus::Ok) {
         rep.status = StepStatus::EvaluationFailed;
+        rep.recoverable = st == EvalStatus::Recoverable;
         return rep;
       }
       fresh = true;
@@ -352,6 +366,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
     // bits: refactor only for a real change of step or order.
     if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
     rep.status = StepStatus::Ok;
+    rep.recoverable = false;
     rep.iterations = 0;
     NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
     if (out == NewtonOutcome::Failed) return rep;

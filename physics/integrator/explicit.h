@@ -33,6 +33,11 @@ class ExplicitIntegrator final : public Integrator {
   const SolutionPoint& current() const override { return cur_; }
   const Counters& counters() const override { return counters_; }
   const Timers& timers() const override { return timers_; }
+  IntegratorState save() const override { return {{cur_}, counters_, 0}; }
+  void restore(const IntegratorState& s) override {
+    cur_ = s.history.front();
+    counters_ = s.counters;
+  }
 
  private:
   // Acceleration at local coordinates delta around cur_.q with velocity v.

@@ -3,6 +3,8 @@
 // back-substitution).
 #pragma once
 
+#include <vector>
+
 #include "integrator/dae.h"
 
 namespace bdfcar::integ {
@@ -13,6 +15,7 @@ struct SolutionPoint {
   Vec v;       // (nv)
   Vec a;       // (nv)
   Vec lambda;  // (nc)
+  bool operator==(const SolutionPoint& o) const;
   void resize(const DaeSizes& s) {
     q.setZero(s.nq);
     v.setZero(s.nv);
@@ -31,10 +34,14 @@ struct StepReport {
   double contraction = 0;       // ratio of the last two correction norms (0 if one iteration)
   bool jacobianEvaluated = false;
   Message message;
+  // An evaluation failure the DAE marked recoverable (EvalStatus::Recoverable):
+  // the BDF integrator retries it with smaller steps, as IDA does.
+  bool recoverable = false;
   bool ok() const { return status == StepStatus::Ok; }
 };
 
 struct Counters {
+  bool operator==(const Counters&) const = default;
   long steps = 0;             // accepted outer steps
   long substeps = 0;          // solved implicit stages (start-up sub-steps count separately)
   long newtonIterations = 0;
@@ -46,6 +53,17 @@ struct Counters {
   long refreshes = 0;         // Jacobians forced because Newton stopped contracting
   long rescues = 0;           // steps iterated on to tolerance beyond the fixed count
   long splits = 0;            // steps rejected and taken as two half steps
+};
+
+// Everything an integrator carries from one step to the next, as one plain
+// value: the solution history (newest first) and the work counters. What it
+// can recompute (the Jacobian and its factorization) is not part of it: a
+// run continued from a state evaluates a fresh Jacobian at its first step.
+struct IntegratorState {
+  std::vector<SolutionPoint> history;  // node(0), node(1), ... (BDF: up to order + 1; explicit: one)
+  Counters counters;
+  long stepsSinceJacobian = 0;
+  bool operator==(const IntegratorState& o) const;
 };
 
 // Wall time, seconds, accumulated over the run (when timing is on).
@@ -66,6 +84,13 @@ class Integrator {
   virtual const SolutionPoint& current() const = 0;
   virtual const Counters& counters() const = 0;
   virtual const Timers& timers() const = 0;
+  // The state as a value, and back. restore() keeps the options and drops
+  // every cached Jacobian (it is re-evaluated at the next step).
+  virtual IntegratorState save() const = 0;
+  virtual void restore(const IntegratorState& s) = 0;
+  // The next step evaluates a fresh Jacobian (a snapshot boundary: the run
+  // that goes on and a run restored to the snapshot then step alike).
+  virtual void markJacobianStale() {}
 };
 
 }  // namespace bdfcar::integ

@@ -4,7 +4,7 @@ namespace bdfcar::mb {
 
 void sampleDrivers(const Model& model, Data& d, double t) {
   for (int k = 0; k < model.nDrivers; ++k)
-    d.driverTargets[k] = d.driverSignals[k] ? d.driverSignals[k]->at(t) : DriverTarget{};
+    d.driverTargets[k] = d.driverSignals[k] ? d.driverSignals[k]->at(t) : SignalValue{};
 }
 
 namespace {
@@ -65,7 +65,7 @@ void evaluate(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorX
       }
       case CutJointType::Driver: {
         const Body& b = model.bodies[c.drivenBody];
-        const DriverTarget& s = d.driverTargets[c.driverSlot];
+        const SignalValue& s = d.driverTargets[c.driverSlot];
         d.phi(c.row) = q(b.qIndex) - s.value;
         if (withVel) d.phiDot(c.row) = (*v)(b.vIndex) - s.rate;
         if (withAcc) d.phiDDot(c.row) = (*a)(b.vIndex) - s.accel;

@@ -20,7 +20,7 @@ Data makeData(const Model& model) {
   d.phi = Eigen::VectorXd::Zero(model.nc);
   d.phiDot = Eigen::VectorXd::Zero(model.nc);
   d.phiDDot = Eigen::VectorXd::Zero(model.nc);
-  d.driverTargets.assign(model.nDrivers, DriverTarget{});
+  d.driverTargets.assign(model.nDrivers, SignalValue{});
   d.Ic.assign(nb, Mat6::Zero());
   d.springLength.assign(model.springs.size(), 0.0);
   d.springForce.assign(model.springs.size(), 0.0);

@@ -6,24 +6,13 @@
 #include <vector>
 
 #include "multibody/model.h"
+#include "multibody/time_signal.h"
 
 namespace bdfcar::mb {
 
-// Prescribed value of a driver constraint at time t, with its first two time derivatives.
-struct DriverTarget {
-  double value = 0.0, rate = 0.0, accel = 0.0;
-};
-
-// A time signal for a driver constraint (rack travel, ...).
-class DriverSignal {
- public:
-  virtual ~DriverSignal() = default;
-  virtual DriverTarget at(double t) const = 0;
-};
-
 struct Data {
   // --- inputs ---
-  std::vector<const DriverSignal*> driverSignals;  // (nDrivers) null = held at 0
+  std::vector<const TimeSignal*> driverSignals;  // (nDrivers) prescribed motions; null = held at 0
 
   // --- computed by updatePositions (q) ---
   std::vector<Transform> Xup;     // (nbody) parent -> body motion transform
@@ -46,7 +35,7 @@ struct Data {
 
   // --- constraints: computed by constraintResiduals ---
   Eigen::VectorXd phi, phiDot, phiDDot;  // (nc) the three constraint levels
-  std::vector<DriverTarget> driverTargets;  // (nDrivers) sampled at the evaluation time
+  std::vector<SignalValue> driverTargets;  // (nDrivers) sampled at the evaluation time
 
   // --- computed by massMatrix (CRBA) ---
   std::vector<Mat6> Ic;           // (nbody) composite inertias

@@ -39,7 +39,7 @@ class MultibodyDae final : public integ::Dae {
   explicit MultibodyDae(const Model& model);
 
   void addForceProvider(ForceProvider* p) { providers_.push_back(p); }
-  void setDriverSignal(int slot, const DriverSignal* s) { data_.driverSignals.at(slot) = s; }
+  void setDriverSignal(int slot, const TimeSignal* s) { data_.driverSignals.at(slot) = s; }
   void setLimits(const StateLimits& l) { limits_ = l; }
   const Model& model() const { return model_; }
   Data& data() { return data_; }

@@ -25,6 +25,16 @@ class PathFollower {
   // speed v and yaw rate r; dt is the time since the last call.
   double steer(double x, double y, double yaw, double v, double yawRate, double dt);
   double understeerGain() const { return gain_; }
+  // What the follower has learnt and last asked for: its run state.
+  struct State {
+    double gain = 1.0, lastCurvature = 0.0;
+    bool operator==(const State&) const = default;
+  };
+  State state() const { return {gain_, lastCurvature_}; }
+  void setState(const State& s) {
+    gain_ = s.gain;
+    lastCurvature_ = s.lastCurvature;
+  }
 
  private:
   PathFollowerParams p_;

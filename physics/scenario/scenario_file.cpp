@@ -1,3 +1,4 @@
+#include <cmath>
 #include <filesystem>
 
 #include "config/toml_reader.h"
@@ -59,6 +60,12 @@ SignalSpec readSignal(Table t, double lo, double hi) {
 
 }  // namespace
 
+int stepsPerTick(double tick, double step) {
+  if (!(tick > 0) || !(step > 0)) return 0;
+  const double n = std::round(tick / step);
+  return n >= 1 && n <= 1e6 && std::abs(n * step - tick) <= 1e-9 * tick ? static_cast<int>(n) : 0;
+}
+
 ScenarioSpec loadScenarioFile(const std::string& path) {
   Table root = config::parseTomlFile(path);
   ScenarioSpec s;
@@ -71,6 +78,8 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   sc.require(s.duration > 0 && s.duration < 1e6, "duration", "a positive duration (s)");
   s.outputInterval = sc.number("output_interval", Dimension::Time, s.outputInterval);
   sc.require(s.outputInterval > 0, "output_interval", "a positive interval (s)");
+  s.tick = sc.number("tick", Dimension::Time, s.tick);
+  sc.require(s.tick >= 1e-3 && s.tick <= 0.1, "tick", "a driver tick in [1, 100] ms");
   s.raysPerWheel = static_cast<int>(sc.integer("rays_per_wheel", 1));
   sc.require(s.raysPerWheel >= 1 && s.raysPerWheel <= 15, "rays_per_wheel", "1 to 15 rays");
   sc.finish();
@@ -91,6 +100,7 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   }
   if (auto it = root.optionalTable("integrator")) {
     IntegratorSpec& i = s.integrator;
+    integ::BdfOptions& b = i.bdf;
     const std::string m = it->string("method", "bdf");
     if (m == "bdf") i.method = IntegratorMethod::Bdf;
     else if (m == "rk4") i.method = IntegratorMethod::Rk4;
@@ -98,16 +108,19 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
     else it->fail("unknown method '" + m + "': expected bdf, rk4 or euler", "method");
     i.step = it->number("step", Dimension::Time, i.step);
     it->require(i.step > 0 && i.step <= 0.1, "step", "a step in (0, 0.1] s");
-    i.order = static_cast<int>(it->integer("order", i.order));
-    it->require(i.order >= 1 && i.order <= 5, "order", "a BDF order from 1 to 5");
-    i.newtonIterations = static_cast<int>(it->integer("newton_iterations", i.newtonIterations));
-    it->require(i.newtonIterations >= 0 && i.newtonIterations <= 50, "newton_iterations", "0 (to tolerance) to 50");
-    i.jacobianEvery = static_cast<int>(it->integer("jacobian_every", i.jacobianEvery));
-    it->require(i.jacobianEvery >= 0, "jacobian_every", "0 (first step only) or a positive number of steps");
-    i.refreshWhenNotContracting = it->boolean("refresh_when_not_contracting", i.refreshWhenNotContracting);
-    i.atol = it->number("atol", Dimension::None, i.atol);
-    i.rtol = it->number("rtol", Dimension::None, i.rtol);
-    it->require(i.atol > 0 && i.rtol >= 0, "atol", "positive tolerances");
+    it->require(stepsPerTick(s.tick, i.step) > 0, "step",
+                "a step that divides the driver's tick of " + std::to_string(s.tick * 1e3) +
+                    " ms (a whole number of steps per tick)");
+    b.order = static_cast<int>(it->integer("order", b.order));
+    it->require(b.order >= 1 && b.order <= 5, "order", "a BDF order from 1 to 5");
+    b.newtonIterations = static_cast<int>(it->integer("newton_iterations", b.newtonIterations));
+    it->require(b.newtonIterations >= 0 && b.newtonIterations <= 50, "newton_iterations", "0 (to tolerance) to 50");
+    b.jacobianEvery = static_cast<int>(it->integer("jacobian_every", b.jacobianEvery));
+    it->require(b.jacobianEvery >= 0, "jacobian_every", "0 (first step only) or a positive number of steps");
+    b.refreshWhenNotContracting = it->boolean("refresh_when_not_contracting", b.refreshWhenNotContracting);
+    b.atol = it->number("atol", Dimension::None, b.atol);
+    b.rtol = it->number("rtol", Dimension::None, b.rtol);
+    it->require(b.atol > 0 && b.rtol >= 0, "atol", "positive tolerances");
     it->finish();
   }
   if (auto t = root.optionalTable("steering")) s.steering = readSignal(*t, -1.0, 1.0);

@@ -6,18 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "integrator/bdf.h"
+#include "integrator/explicit.h"
+
 namespace bdfcar::scenario {
 
 enum class IntegratorMethod { Bdf, Rk4, SemiImplicitEuler };
 
+// How a scenario is integrated: the method, the step, and the integrators'
+// own options (their defaults are stated there, once).
 struct IntegratorSpec {
   IntegratorMethod method = IntegratorMethod::Bdf;
-  double step = 0.01;          // s
-  int order = 2;               // BDF order
-  int newtonIterations = 2;    // 0 = iterate to tolerance
-  int jacobianEvery = 200;     // steps; 0 = first step only
-  bool refreshWhenNotContracting = true;
-  double atol = 1e-6, rtol = 1e-6;  // Newton tolerance when iterating to tolerance
+  double step = 0.01;          // s; divides the driver's tick
+  integ::BdfOptions bdf;       // order, Newton policy, tolerances, Jacobian reuse
+  integ::ExplicitOptions explicitMethod;  // rk4 / euler (method set from `method`)
 };
 
 // A scripted input channel (steering in [-1, 1], throttle and brake in [0, 1]).
@@ -52,6 +54,9 @@ struct ScenarioSpec {
   double settleTime = 0;       // s of straight running before tau = 0 (not recorded)
   double startX = 0, startY = 0, startHeading = 0;  // m, m, rad
   double outputInterval = 0.01;  // telemetry period, s
+  // The driver's input period (a person's device poll, a replay's line, the
+  // path follower's decision): each tick runs tick / integrator.step steps.
+  double tick = 0.01;          // s
   int raysPerWheel = 1;
   IntegratorSpec integrator;
   SignalSpec steering, throttle, brake;
@@ -59,6 +64,9 @@ struct ScenarioSpec {
   CourseSpec course;
   PathFollowerSpec pathFollower;
 };
+
+// Integration steps per driver tick; 0 when the step does not divide the tick.
+int stepsPerTick(double tick, double step);
 
 // Loads a scenario file; throws config::ConfigError with file:line; the
 // vehicle and terrain paths are resolved relative to the scenario file and

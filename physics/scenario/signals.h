@@ -6,17 +6,12 @@
 #include <memory>
 #include <vector>
 
+#include "multibody/time_signal.h"
+
 namespace bdfcar::scenario {
 
-struct SignalValue {
-  double value = 0, rate = 0, accel = 0;
-};
-
-class Signal {
- public:
-  virtual ~Signal() = default;
-  virtual SignalValue at(double t) const = 0;
-};
+using mb::SignalValue;
+using Signal = mb::TimeSignal;
 
 // 0 before `start`, linear to `level` over `rise` seconds, then held (the J-turn).
 class RampSignal final : public Signal {

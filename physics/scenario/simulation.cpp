@@ -15,28 +15,28 @@
 
 namespace bdfcar::scenario {
 
-void RackSignal::setSegment(double t0, double s0, double t1, double s1) {
-  scripted_ = nullptr;
-  t0_ = t0;
-  s0_ = s0;
-  t1_ = t1;
-  s1_ = s1;
-}
-
 double RackSignal::steerAt(double t) const {
-  if (scripted_) return scripted_->at(t).value;
-  if (t >= t1_ || t1_ <= t0_) return s1_;
-  if (t <= t0_) return s0_;
-  return s0_ + (s1_ - s0_) * (t - t0_) / (t1_ - t0_);
+  const RackSegment& g = segment;
+  if (g.scripted) return scripted_.at(t).value;
+  if (t >= g.t1 || g.t1 <= g.t0) return g.s1;
+  if (t <= g.t0) return g.s0;
+  return g.s0 + (g.s1 - g.s0) * (t - g.t0) / (g.t1 - g.t0);
 }
 
-mb::DriverTarget RackSignal::at(double t) const {
-  if (scripted_) {
-    const SignalValue s = scripted_->at(t);
+SignalValue RackSignal::at(double t) const {
+  const RackSegment& g = segment;
+  if (g.scripted) {
+    const SignalValue s = scripted_.at(t);
     return {gain_ * s.value, gain_ * s.rate, gain_ * s.accel};
   }
-  const double rate = (t1_ > t0_ && t < t1_ + 1e-12) ? (s1_ - s0_) / (t1_ - t0_) : 0.0;
+  const double rate = (g.t1 > g.t0 && t < g.t1 + 1e-12) ? (g.s1 - g.s0) / (g.t1 - g.t0) : 0.0;
   return {gain_ * steerAt(t), gain_ * rate, 0.0};
+}
+
+bool RunState::operator==(const RunState& o) const {
+  return integrator == o.integrator && forces == o.forces && rack == o.rack && speedIntegral == o.speedIntegral &&
+         follower == o.follower && input.steer == o.input.steer && input.throttle == o.input.throttle &&
+         input.brake == o.input.brake && scriptedDriver == o.scriptedDriver && airborne == o.airborne;
 }
 
 std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
@@ -64,33 +64,46 @@ std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
 
 }  // namespace
 
-Simulation::Simulation(const ScenarioSpec& spec)
-    : spec_(spec),
-      vehicle_(vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile))),
-      terrain_(loadGround(spec)),
-      rack_(vehicle_.layout.rackAxisSign * -vehicle_.spec.steering.rackTravelFull) {
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
+  auto w = std::make_shared<World>();
+  w->spec = spec;
+  w->stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
+  if (w->stepsPerTick == 0)
+    throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
+                             " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
+  w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile));
+  w->terrain = loadGround(spec);
+  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY);
+  return w;
+}
+
+Simulation::Simulation(const ScenarioSpec& spec) : Simulation(buildWorld(spec)) {}
+
+Simulation::Simulation(std::shared_ptr<const World> world)
+    : world_(std::move(world)),
+      steering_(makeSignal(world_->spec.steering)),
+      throttle_(makeSignal(world_->spec.throttle)),
+      brake_(makeSignal(world_->spec.brake)),
+      rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_) {
+  const ScenarioSpec& spec = world_->spec;
+  const vehicle::Vehicle& veh = world_->vehicle;
   vehicle::TerrainContactOptions contact;
-  contact.raysPerWheel = spec_.raysPerWheel;
-  forces_ = std::make_unique<vehicle::VehicleForces>(vehicle_, *terrain_, contact);
-  dae_ = std::make_unique<mb::MultibodyDae>(vehicle_.model);
+  contact.raysPerWheel = spec.raysPerWheel;
+  forces_ = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
+  dae_ = std::make_unique<mb::MultibodyDae>(veh.model);
   dae_->addForceProvider(forces_.get());
-  dae_->setDriverSignal(vehicle_.layout.rackDriverSlot, &rack_);
-  steering_ = makeSignal(spec_.steering);
-  throttle_ = makeSignal(spec_.throttle);
-  brake_ = makeSignal(spec_.brake);
-  rack_.setScripted(steering_.get());
-  if (spec_.speedControl.enabled)
-    speed_.emplace(spec_.speedControl.target, SpeedControllerGains{spec_.speedControl.kp, spec_.speedControl.ki});
-  if (spec_.course.iso3888) course_ = makeIso3888Course(vehicleWidth(vehicle_), spec_.course.startX, spec_.startY);
-  if (spec_.pathFollower.enabled) {
+  dae_->setDriverSignal(veh.layout.rackDriverSlot, &rack_);
+  if (spec.speedControl.enabled)
+    speed_.emplace(spec.speedControl.target, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki});
+  if (spec.pathFollower.enabled) {
     PathFollowerParams p;
-    p.lookAheadTime = spec_.pathFollower.lookAheadTime;
-    p.minLookAhead = spec_.pathFollower.minLookAhead;
-    p.wheelbase = vehicle_.spec.geometry.wheelbase;
+    p.lookAheadTime = spec.pathFollower.lookAheadTime;
+    p.minLookAhead = spec.pathFollower.minLookAhead;
+    p.wheelbase = veh.spec.geometry.wheelbase;
     // Steering ratio from the kinematics of the data.
-    p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(vehicle_));
+    p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(veh));
     // Keep 40 % of each lane's spare width for the tracking error.
-    follower_.emplace(p, [c = *course_, w = vehicleWidth(vehicle_)](double x) { return c.drivingLineY(x, w, 0.6); });
+    follower_.emplace(p, [c = *world_->course, w = vehicleWidth(veh)](double x) { return c.drivingLineY(x, w, 0.6); });
   }
   makeIntegrator();
 }
@@ -98,18 +111,11 @@ Simulation::Simulation(const ScenarioSpec& spec)
 Simulation::~Simulation() = default;
 
 void Simulation::makeIntegrator() {
-  const IntegratorSpec& is = spec_.integrator;
+  const IntegratorSpec& is = spec().integrator;
   if (is.method == IntegratorMethod::Bdf) {
-    integ::BdfOptions o;
-    o.order = is.order;
-    o.newtonIterations = is.newtonIterations;
-    o.jacobianEvery = is.jacobianEvery;
-    o.refreshWhenNotContracting = is.refreshWhenNotContracting;
-    o.atol = is.atol;
-    o.rtol = is.rtol;
-    integrator_ = std::make_unique<integ::BdfIntegrator>(*dae_, o);
+    integrator_ = std::make_unique<integ::BdfIntegrator>(*dae_, is.bdf);
   } else {
-    integ::ExplicitOptions o;
+    integ::ExplicitOptions o = is.explicitMethod;
     o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
     integrator_ = std::make_unique<integ::ExplicitIntegrator>(*dae_, o);
   }
@@ -117,17 +123,17 @@ void Simulation::makeIntegrator() {
 
 Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
-  const Eigen::Matrix3d yaw = Eigen::AngleAxisd(spec_.startHeading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  const Eigen::Vector3d start(spec_.startX, spec_.startY, 0.0);
+  const Eigen::Matrix3d yaw = Eigen::AngleAxisd(spec().startHeading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d start(spec().startX, spec().startY, 0.0);
   auto groundAt = [&](const Eigen::Vector3d& p) {
-    const terrain::Hit g = terrain_->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
+    const terrain::Hit g = world_->terrain->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
     return g.hit ? g.point.z() : 0.0;
   };
   // Least-squares plane z = c0 + c1 x + c2 y through the ground under the wheels.
   Eigen::Matrix<double, 4, 3> A;
   Eigen::Vector4d b;
   for (int w = 0; w < 4; ++w) {
-    const mb::Vec3 centre = vehicle_.spec.bodies[vehicle_.layout.wheels[w].spindle].com;
+    const mb::Vec3 centre = vehicle().spec.bodies[vehicle().layout.wheels[w].spindle].com;
     const Eigen::Vector3d p = start + yaw * Eigen::Vector3d(centre.x(), centre.y(), 0.0);
     A.row(w) << 1.0, p.x(), p.y();
     b(w) = groundAt(p);
@@ -142,18 +148,18 @@ Simulation::StartPose Simulation::startPose() const {
   pose.rotation.col(1) = n.cross(x);
   pose.rotation.col(2) = n;
   pose.groundZ = c(0) + c(1) * start.x() + c(2) * start.y();
-  pose.origin = Eigen::Vector3d(start.x(), start.y(), pose.groundZ) + vehicle_.spec.designHeight * n;
+  pose.origin = Eigen::Vector3d(start.x(), start.y(), pose.groundZ) + vehicle().spec.designHeight * n;
   return pose;
 }
 
 vehicle::EquilibriumReport Simulation::prepare() {
-  const mb::Model& m = vehicle_.model;
-  const mb::Body& ch = m.bodies[vehicle_.layout.chassis];
-  const double t0 = -spec_.settleTime;
+  const mb::Model& m = vehicle().model;
+  const mb::Body& ch = m.bodies[vehicle().layout.chassis];
+  const double t0 = -spec().settleTime;
   // Start pose: the design configuration placed on the ground at the start
   // point, its chassis aligned with the plane through the ground under the
   // four wheels (on a slope the car starts on the slope, not in it).
-  integ::Vec q = vehicle::designPositions(vehicle_);
+  integ::Vec q = vehicle::designPositions(vehicle());
   const StartPose pose = startPose();
   const double groundZ = pose.groundZ;
   q.segment<3>(ch.qIndex) = pose.origin;
@@ -163,10 +169,10 @@ vehicle::EquilibriumReport Simulation::prepare() {
   q(ch.qIndex + 5) = yaw.y();
   q(ch.qIndex + 6) = yaw.z();
   std::string msg;
-  if (!vehicle::assemble(vehicle_, *dae_, t0, q, msg)) throw std::runtime_error(spec_.vehicleFile + ": " + msg);
+  if (!vehicle::assemble(vehicle(), *dae_, t0, q, msg)) throw std::runtime_error(spec().vehicleFile + ": " + msg);
   integ::Vec lambda = integ::Vec::Zero(m.nc);
-  vehicle::EquilibriumReport eq = vehicle::settleStatic(vehicle_, *dae_, *forces_, t0, q, lambda);
-  if (!eq.converged) throw std::runtime_error(spec_.vehicleFile + ": " + eq.message);
+  vehicle::EquilibriumReport eq = vehicle::settleStatic(vehicle(), *dae_, *forces_, t0, q, lambda);
+  if (!eq.converged) throw std::runtime_error(spec().vehicleFile + ": " + eq.message);
   eq.chassisHeight -= groundZ;
   eq.comHeight -= groundZ;
 
@@ -174,12 +180,12 @@ vehicle::EquilibriumReport Simulation::prepare() {
   integ::Vec v = integ::Vec::Zero(m.nv);
   mb::Data& d = dae_->data();
   mb::updatePositions(m, q, d);
-  const Eigen::Vector3d worldVel = spec_.initialSpeed * (d.R[vehicle_.layout.chassis] * Eigen::Vector3d::UnitX());
-  v.segment<3>(ch.vIndex) = d.R[vehicle_.layout.chassis].transpose() * worldVel;
+  const Eigen::Vector3d worldVel = spec().initialSpeed * (d.R[vehicle().layout.chassis] * Eigen::Vector3d::UnitX());
+  v.segment<3>(ch.vIndex) = d.R[vehicle().layout.chassis].transpose() * worldVel;
   for (int w = 0; w < 4; ++w) {
-    const vehicle::WheelLayout& wl = vehicle_.layout.wheels[w];
-    const double rolling = wl.spec->tyre.unloadedRadius - forces_->wheels()[w].out.deflection;
-    v(wl.spinV) = wl.spinSign * spec_.initialSpeed / rolling;
+    const vehicle::WheelLayout& wl = vehicle().layout.wheels[w];
+    const double rolling = tyre::unloadedRadius(vehicle().wheel(w).tyre) - forces_->wheels()[w].out.deflection;
+    v(wl.spinV) = wl.spinSign * spec().initialSpeed / rolling;
   }
   forces_->reset(t0);
   integ::Message im;
@@ -187,9 +193,11 @@ vehicle::EquilibriumReport Simulation::prepare() {
     throw std::runtime_error(std::string("initial state: ") + im.c_str());
   prepared_ = true;
   airborne_ = 0;
+  scriptedDriver_ = true;
+  rack_.segment = RackSegment{};
   // Settling: straight running with the scripted driver (steering is zero before tau = 0).
-  const double h = spec_.integrator.step;
-  const long settleSteps = std::lround(spec_.settleTime / h);
+  const double h = spec().integrator.step;
+  const long settleSteps = std::lround(spec().settleTime / h);
   for (long i = 0; i < settleSteps; ++i) {
     const integ::StepReport r = step();
     if (!r.ok())
@@ -202,17 +210,53 @@ void Simulation::applyDrive(const DriverInput& in, double vx, double h) {
   double pi = 0;
   if (speed_) pi = speed_->torque(vx, h);
   for (int w = 0; w < 4; ++w) {
-    const vehicle::WheelSpec& ws = *vehicle_.layout.wheels[w].spec;
-    const double drive = ws.driven ? in.throttle * vehicle_.spec.maxDriveTorque + pi : 0.0;
+    const vehicle::WheelSpec& ws = vehicle().wheel(w);
+    const double drive = ws.driven ? in.throttle * vehicle().spec.maxDriveTorque + pi : 0.0;
     forces_->setDriveTorque(w, drive);
     forces_->setBrakeCapacity(w, in.brake * ws.brakeTorque);
   }
 }
 
-integ::StepReport Simulation::advance(const DriverInput& in) {
+Simulation::ChassisState Simulation::chassisState() const {
+  // From the coordinates directly (no kinematic pass): the free joint holds
+  // the chassis position and attitude, its velocity is in chassis axes.
+  const integ::SolutionPoint& p = integrator_->current();
+  const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
+  const double* qc = p.q.data() + ch.qIndex;
+  const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).toRotationMatrix();
+  const Eigen::Vector3d vb = p.v.segment<3>(ch.vIndex), wb = p.v.segment<3>(ch.vIndex + 3);
+  ChassisState s;
+  s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
+  s.yaw = std::atan2(R(1, 0), R(0, 0));
+  s.vx = (vb + wb.cross(ch.com)).x();
+  s.yawRate = wb.z();
+  return s;
+}
+
+void Simulation::beginTick(const std::optional<DriverInput>& input) {
+  const double t = time(), tick = spec().tick;
+  scriptedDriver_ = !input;
+  if (input) {
+    input_.steer = std::clamp(input->steer, -1.0, 1.0);
+    input_.throttle = std::clamp(input->throttle, 0.0, 1.0);
+    input_.brake = std::clamp(input->brake, 0.0, 1.0);
+    rack_.segment = {false, t, rack_.steerAt(t), t + tick, input_.steer};
+  } else if (follower_ && t >= 0) {
+    const ChassisState s = chassisState();
+    input_.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, tick);
+    rack_.segment = {false, t, rack_.steerAt(t), t + tick, input_.steer};
+  }
+}
+
+integ::StepReport Simulation::step() {
   if (!prepared_) throw std::logic_error("Simulation::prepare() must run before step()");
-  lastInput_ = in;
-  const double h = spec_.integrator.step;
+  const double t = time(), h = spec().integrator.step;
+  if (scriptedDriver_) {
+    input_.throttle = throttle_->at(t).value;
+    input_.brake = brake_->at(t).value;
+    if (rack_.segment.scripted) input_.steer = steering_->at(t + h).value;
+  }
+  applyDrive(input_, chassisState().vx, h);
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;
   bool grounded = false;
@@ -228,51 +272,34 @@ integ::StepReport Simulation::advance(const DriverInput& in) {
   return r;
 }
 
-Simulation::ChassisState Simulation::chassisState() const {
-  // From the coordinates directly (no kinematic pass): the free joint holds
-  // the chassis position and attitude, its velocity is in chassis axes.
-  const integ::SolutionPoint& p = integrator_->current();
-  const mb::Body& ch = vehicle_.model.bodies[vehicle_.layout.chassis];
-  const double* qc = p.q.data() + ch.qIndex;
-  const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).toRotationMatrix();
-  const Eigen::Vector3d vb = p.v.segment<3>(ch.vIndex), wb = p.v.segment<3>(ch.vIndex + 3);
-  ChassisState s;
-  s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
-  s.yaw = std::atan2(R(1, 0), R(0, 0));
-  s.vx = (vb + wb.cross(ch.com)).x();
-  s.yawRate = wb.z();
+RunState Simulation::save() {
+  RunState s;
+  s.integrator = integrator_->save();
+  s.forces = forces_->state();
+  s.rack = rack_.segment;
+  s.speedIntegral = speed_ ? speed_->integral() : 0.0;
+  if (follower_) s.follower = follower_->state();
+  s.input = input_;
+  s.scriptedDriver = scriptedDriver_;
+  s.airborne = airborne_;
+  integrator_->markJacobianStale();
   return s;
 }
 
-integ::StepReport Simulation::step() {
-  const double t = time(), h = spec_.integrator.step;
-  const ChassisState s = chassisState();
-  DriverInput in;
-  in.throttle = throttle_->at(t).value;
-  in.brake = brake_->at(t).value;
-  if (follower_ && t >= 0) {
-    in.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, h);
-    rack_.setSegment(t, rack_.steerAt(t), t + h, in.steer);
-  } else {
-    in.steer = steering_->at(t + h).value;
-  }
-  applyDrive(in, s.vx, h);
-  return advance(in);
+void Simulation::restore(const RunState& s) {
+  integrator_->restore(s.integrator);
+  forces_->setState(s.forces);
+  rack_.segment = s.rack;
+  if (speed_) speed_->setIntegral(s.speedIntegral);
+  if (follower_) follower_->setState(s.follower);
+  input_ = s.input;
+  scriptedDriver_ = s.scriptedDriver;
+  airborne_ = s.airborne;
+  prepared_ = true;
 }
 
-integ::StepReport Simulation::step(const DriverInput& input) {
-  const double t = time(), h = spec_.integrator.step;
-  DriverInput in = input;
-  in.steer = std::clamp(in.steer, -1.0, 1.0);
-  in.throttle = std::clamp(in.throttle, 0.0, 1.0);
-  in.brake = std::clamp(in.brake, 0.0, 1.0);
-  rack_.setSegment(t, rack_.steerAt(t), t + h, in.steer);
-  applyDrive(in, chassisState().vx, h);
-  return advance(in);
-}
+vehicle::VehicleSample Simulation::sample() { return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, integrator_->current()); }
 
-vehicle::VehicleSample Simulation::sample() { return vehicle::sampleVehicle(vehicle_, *dae_, *forces_, integrator_->current()); }
-
-vehicle::VehicleView Simulation::view() { return vehicle::viewVehicle(vehicle_, *dae_, *forces_, time()); }
+vehicle::VehicleView Simulation::view() { return vehicle::viewVehicle(vehicle(), *dae_, *forces_, time()); }
 
 }  // namespace bdfcar::scenario

@@ -1,11 +1,16 @@
-// One running scenario: vehicle, terrain, forces, integrator and the
-// scripted driver, advanced one step at a time. Used by batch runs
-// (`bdfcar run`), the reports and the interactive game loop alike.
+// One running scenario. What is built once (the World: vehicle, terrain,
+// course) is kept apart from what changes while it runs (the RunState: the
+// integrator's history, the force laws' states, the driver's), so that a run
+// can be saved, restored, rewound and restarted by assignment.
 //
-//   Simulation sim(spec);        // loads and builds
-//   sim.prepare();               // assemble, static equilibrium, initial speed, settle
-//   while (sim.time() < end) sim.step();            // scripted driver
-//   sim.step(driverInput);                          // or a person's input
+//   Simulation sim(spec);              // builds the world, the force laws, the integrator
+//   sim.prepare();                     // assembly, static equilibrium, initial speed, settling
+//   sim.beginTick(std::nullopt);       // each driver tick: the scripted driver's decision,
+//   sim.beginTick(driverInput);        //   or a person's input, held for the tick
+//   for (int i = 0; i < sim.stepsPerTick(); ++i) sim.step();
+//   RunState s = sim.save(); ...; sim.restore(s);
+//
+// The run driver (scenario/run.h) does exactly this for every command.
 #pragma once
 
 #include <memory>
@@ -27,48 +32,92 @@
 
 namespace bdfcar::scenario {
 
-// The rack target as a driver signal: steer s(t) in [-1, 1] -> rack travel.
-class RackSignal final : public mb::DriverSignal {
+// What a scenario builds once and never changes while it runs.
+struct World {
+  ScenarioSpec spec;
+  vehicle::Vehicle vehicle;
+  std::unique_ptr<const terrain::Terrain> terrain;  // Bullet shapes built here, once
+  std::optional<Iso3888Course> course;
+  int stepsPerTick = 1;                             // spec.tick / spec.integrator.step
+};
+
+// Loads the vehicle and terrain files and builds the world; throws on bad
+// data or a step that does not divide the tick.
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec);
+
+// The rack's target between two driver inputs: steer goes linearly from s0
+// at t0 to s1 at t1 (a real rack follows a sampled input), then holds; or,
+// when scripted, the scenario's analytic steering signal.
+struct RackSegment {
+  bool scripted = true;
+  double t0 = 0, s0 = 0, t1 = 0, s1 = 0;
+  bool operator==(const RackSegment&) const = default;
+};
+
+// Everything that changes while a scenario runs, as one plain value:
+// copyable, comparable, restorable. The Jacobian is not part of it (a run
+// continued from a state evaluates a fresh one).
+struct RunState {
+  integ::IntegratorState integrator;
+  vehicle::VehicleForces::State forces;
+  RackSegment rack;
+  double speedIntegral = 0;            // the speed controller's integral, m
+  PathFollower::State follower;
+  DriverInput input;                   // held for the current tick
+  bool scriptedDriver = true;          // the scenario's driver (vs a person's held input)
+  double airborne = 0;                 // s with no ground under any wheel
+  bool operator==(const RunState& o) const;
+};
+
+// The rack target as a signal: steer s(t) in [-1, 1] -> rack travel.
+class RackSignal final : public Signal {
  public:
-  RackSignal(double rackPerSteer) : gain_(rackPerSteer) {}
-  // Scripted: an analytic steering signal.
-  void setScripted(const Signal* s) { scripted_ = s; }
-  // Interactive: reach `steer` at the end of the step [t0, t1] linearly (as a
-  // real rack follows a sampled input), held afterwards.
-  void setSegment(double t0, double steer0, double t1, double steer1);
-  mb::DriverTarget at(double t) const override;
+  RackSignal(double rackPerSteer, const Signal& scripted) : gain_(rackPerSteer), scripted_(scripted) {}
+  RackSegment segment;
+  SignalValue at(double t) const override;
   double steerAt(double t) const;
 
  private:
   double gain_;
-  const Signal* scripted_ = nullptr;
-  double t0_ = 0, s0_ = 0, t1_ = 0, s1_ = 0;
+  const Signal& scripted_;
 };
 
 class Simulation {
  public:
   explicit Simulation(const ScenarioSpec& spec);
+  explicit Simulation(std::shared_ptr<const World> world);
   ~Simulation();
 
   // Assembly, static equilibrium at the start pose, initial speed, then the
   // settling phase (tau = 0 at its end). Returns the static equilibrium.
   vehicle::EquilibriumReport prepare();
 
-  // One step of spec().integrator.step seconds with the scripted driver.
+  // Starts a driver tick: nullopt = the scenario's own driver (scripted
+  // signals, evaluated at every step; the path follower decides now), or a
+  // person's (a replay's) input, held for the tick with the rack moving
+  // linearly to the new steering over the tick.
+  void beginTick(const std::optional<DriverInput>& input);
+  // One integration step of spec().integrator.step seconds.
   integ::StepReport step();
-  // One step with a person's (or any external) input.
-  integ::StepReport step(const DriverInput& input);
+  int stepsPerTick() const { return world_->stepsPerTick; }
+
+  // The run state. save() makes the current point a Jacobian boundary: the
+  // next step evaluates a fresh Jacobian, in this run and in any run
+  // restored to the state, so both continue bit for bit alike.
+  RunState save();
+  void restore(const RunState& s);
 
   double time() const { return integrator_->current().t; }
   vehicle::VehicleSample sample();                  // at the current state
   vehicle::VehicleView view();                      // after sample()
-  const ScenarioSpec& spec() const { return spec_; }
-  const vehicle::Vehicle& vehicle() const { return vehicle_; }
+  const World& world() const { return *world_; }
+  const ScenarioSpec& spec() const { return world_->spec; }
+  const vehicle::Vehicle& vehicle() const { return world_->vehicle; }
   const integ::Integrator& integrator() const { return *integrator_; }
-  const std::optional<Iso3888Course>& course() const { return course_; }
+  const std::optional<Iso3888Course>& course() const { return world_->course; }
   // Steering input in [-1, 1] applied at time t (scripted, path follower or person).
   double steerAt(double t) const { return rack_.steerAt(t); }
-  DriverInput lastInput() const { return lastInput_; }
+  DriverInput lastInput() const { return input_; }
   double driveTorque(int wheel) const { return forces_->wheels()[wheel].driveTorque; }
 
  private:
@@ -85,20 +134,17 @@ class Simulation {
   ChassisState chassisState() const;
   void makeIntegrator();
   void applyDrive(const DriverInput& in, double vx, double h);
-  integ::StepReport advance(const DriverInput& in);
 
-  ScenarioSpec spec_;
-  vehicle::Vehicle vehicle_;
-  std::unique_ptr<terrain::Terrain> terrain_;
+  std::shared_ptr<const World> world_;
+  std::unique_ptr<Signal> steering_, throttle_, brake_;
   std::unique_ptr<vehicle::VehicleForces> forces_;
   std::unique_ptr<mb::MultibodyDae> dae_;
   std::unique_ptr<integ::Integrator> integrator_;
-  std::unique_ptr<Signal> steering_, throttle_, brake_;
   std::optional<SpeedController> speed_;
-  std::optional<Iso3888Course> course_;
   std::optional<PathFollower> follower_;
   RackSignal rack_;
-  DriverInput lastInput_;
+  DriverInput input_;
+  bool scriptedDriver_ = true;
   bool prepared_ = false;
   // Time with no ground under any wheel: off the edge of a bounded terrain the
   // car would fall for ever, so the run stops with a message instead. A jump

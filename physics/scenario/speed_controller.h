@@ -25,6 +25,9 @@ class SpeedController {
   void setTarget(double v) { target_ = v; }
   double target() const { return target_; }
   void reset() { integral_ = 0; }
+  // The integral of the speed error (m): the controller's run state.
+  double integral() const { return integral_; }
+  void setIntegral(double x) { integral_ = x; }
 
  private:
   double target_;

@@ -34,7 +34,7 @@ void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInpu
   // Tdrive_Nm: the torque on a driven wheel (the reference applies it to each rear wheel).
   double drive = 0;
   for (int w = 0; w < 4; ++w)
-    if (v_.layout.wheels[w].spec->driven) drive = s.driveTorque[w];
+    if (v_.wheel(w).driven) drive = s.driveTorque[w];
   const auto& st = v_.spec.steering;
   const double pinionDeg = config::radToDeg(st.steeringWheelFull * in.steer);
   std::fprintf(f_,

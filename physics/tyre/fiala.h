@@ -52,13 +52,13 @@ PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, d
 // 0 below lowSpeedBlend0, 1 above lowSpeedBlend1, C1-smooth in between.
 double highSpeedWeight(const FialaParams& p, double absVx);
 
-class FialaTyre final : public TyreModel {
+class FialaTyre {
  public:
   explicit FialaTyre(const FialaParams& p) : p_(p) {}
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                      double h) const override;
-  double unloadedRadius() const override { return p_.unloadedRadius; }
-  double width() const override { return p_.width; }
+                      double h) const;
+  double unloadedRadius() const { return p_.unloadedRadius; }
+  double width() const { return p_.width; }
   const FialaParams& params() const { return p_; }
   static constexpr double kContactSmoothing = 10.0;   // N, rounding of the contact corner
   static constexpr double kAirborneClearance = 0.01;  // m above the ground: no contact at all

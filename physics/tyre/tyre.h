@@ -1,7 +1,8 @@
-// A tyre model maps (wheel pose and velocities, local terrain plane) to a
-// force and a moment on the spindle. Models may own transient slip states,
-// advanced once per accepted step (declared here: SlipState). The first
-// model is Fiala (fiala.h); a Magic Formula can implement the same interface.
+// What every tyre model reads and returns: a model maps (wheel pose and
+// velocities, local terrain plane) to a force and a moment on the spindle,
+// and may own transient slip states, advanced once per accepted step
+// (declared here: SlipState). The models themselves are a closed set
+// (tyre_model.h); the first is Fiala (fiala.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +18,7 @@ struct ContactPlane {
   Vec3 point = Vec3::Zero();
   Vec3 normal = Vec3::UnitZ();  // unit, out of the ground
   double friction = 0.8;        // terrain mu
+  bool operator==(const ContactPlane&) const = default;
 };
 
 // Wheel state in the world frame.
@@ -35,6 +37,7 @@ struct SlipState {
   // False while the wheel runs above the low-speed range, where the slips are
   // algebraic: the transient slips then start from the algebraic ones.
   bool active = true;
+  bool operator==(const SlipState&) const = default;
 };
 
 struct TyreOutput {
@@ -49,18 +52,8 @@ struct TyreOutput {
   double deflection = 0;            // vertical tyre deflection delta, m
   double vx = 0, vsx = 0, vsy = 0;  // wheel-centre forward speed and slip velocities, m/s
   SlipState slipState;              // transient slips at the end of this evaluation
+  bool operator==(const TyreOutput&) const = default;
 };
 
-class TyreModel {
- public:
-  virtual ~TyreModel() = default;
-  // Forces for the current wheel state; `previous` are the transient slips at
-  // the last accepted step, h the time since then (the evaluation integrates
-  // them by backward Euler, so it is implicit in the current state).
-  virtual TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                              double h) const = 0;
-  virtual double unloadedRadius() const = 0;
-  virtual double width() const = 0;
-};
 
 }  // namespace bdfcar::tyre

@@ -128,7 +128,6 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
   L.rackDriverSlot = 0;
   for (int w = 0; w < 4; ++w) {
     WheelLayout& wl = L.wheels[w];
-    wl.spec = &s.wheels[w];
     wl.spindle = bodyIndex(s.wheels[w].spindle, "wheel " + s.wheels[w].position);
     const BodySpec& sb = s.bodies[wl.spindle];
     if (sb.joint.type != mb::JointType::Revolute)

@@ -15,7 +15,6 @@ struct WheelLayout {
   int carrier = -1;        // its parent body (upright / knuckle)
   int spinV = -1;          // velocity index of the spin joint
   double spinSign = 1.0;   // +1 if a positive spin coordinate turns the wheel about its +y (left) axis
-  const WheelSpec* spec = nullptr;
 };
 
 // A suspension member for drawing: a segment between two body-fixed points.
@@ -30,16 +29,19 @@ struct VehicleLayout {
   int rack = -1, rackQ = -1, rackV = -1;
   double rackAxisSign = 1.0;   // rack coordinate direction along chassis +y
   int rackDriverSlot = 0;
-  std::array<WheelLayout, 4> wheels;  // FL, FR, RL, RR
+  std::array<WheelLayout, 4> wheels;  // FL, FR, RL, RR (the same order as VehicleSpec::wheels)
   std::vector<LinkDrawing> links;
   int cutJointEquations = 0;   // rows from cut joints (without the rack driver)
   int spinCoordinates = 0;
 };
 
+// A plain value: copies stay valid (the layout holds indices, no pointers).
 struct Vehicle {
   VehicleSpec spec;
   mb::Model model;
   VehicleLayout layout;
+  // The data of wheel w (0..3: FL, FR, RL, RR).
+  const WheelSpec& wheel(int w) const { return spec.wheels[w]; }
 };
 
 // Builds the model; throws mb::ModelError naming the offending element.

@@ -43,7 +43,8 @@ class Loader {
   void readWheels();
   void readSteeringAndDriveline();
   void readAppearance();
-  tyre::FialaParams readTyre(Table t);
+  tyre::TyreParams readTyre(Table t);
+  tyre::FialaParams readFiala(Table& t);
 
   Table root_;
   VehicleSpec spec_;
@@ -299,10 +300,16 @@ void Loader::readSprings() {
   }
 }
 
-tyre::FialaParams Loader::readTyre(Table t) {
-  tyre::FialaParams p;
+// The [tyres.NAME] table: `model` picks one of the closed set of tyre models.
+tyre::TyreParams Loader::readTyre(Table t) {
   const std::string model = t.string("model");
-  if (model != "fiala") t.fail("unknown tyre model '" + model + "': expected fiala", "model");
+  if (model == "fiala") return readFiala(t);
+  t.fail("unknown tyre model '" + model + "': expected fiala", "model");
+  return {};
+}
+
+tyre::FialaParams Loader::readFiala(Table& t) {
+  tyre::FialaParams p;
   auto positive = [&](const char* key, Dimension d, double& out) {
     out = t.number(key, d);
     t.require(out > 0, key, std::string("a positive ") + config::dimensionName(d));
@@ -334,7 +341,7 @@ tyre::FialaParams Loader::readTyre(Table t) {
 
 void Loader::readWheels() {
   Table tyres = root_.table("tyres");
-  std::map<std::string, tyre::FialaParams> byName;
+  std::map<std::string, tyre::TyreParams> byName;
   for (const std::string& k : tyres.keys()) byName[k] = readTyre(tyres.table(k));
   tyres.finish();
   for (Table& w : root_.tables("wheels")) {
@@ -421,8 +428,8 @@ void Loader::readAppearance() {
   g.wheelbase = centre(0).x() - centre(2).x();
   g.trackFront = centre(0).y() - centre(1).y();
   g.trackRear = centre(2).y() - centre(3).y();
-  g.wheelRadius = w[0].tyre.unloadedRadius;
-  g.wheelWidth = w[0].tyre.width;
+  g.wheelRadius = tyre::unloadedRadius(w[0].tyre);
+  g.wheelWidth = tyre::width(w[0].tyre);
 }
 
 VehicleSpec Loader::load() {

@@ -10,8 +10,8 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
     : vehicle_(vehicle),
       terrain_(terrain),
       options_(options),
-      tyres_{tyre::FialaTyre(vehicle.layout.wheels[0].spec->tyre), tyre::FialaTyre(vehicle.layout.wheels[1].spec->tyre),
-             tyre::FialaTyre(vehicle.layout.wheels[2].spec->tyre), tyre::FialaTyre(vehicle.layout.wheels[3].spec->tyre)} {}
+      tyres_{tyre::Tyre(vehicle.wheel(0).tyre), tyre::Tyre(vehicle.wheel(1).tyre), tyre::Tyre(vehicle.wheel(2).tyre),
+             tyre::Tyre(vehicle.wheel(3).tyre)} {}
 
 void VehicleForces::reset(double t) {
   for (WheelContact& c : wheels_) {

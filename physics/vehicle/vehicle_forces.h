@@ -21,7 +21,7 @@
 
 #include "multibody/multibody_dae.h"
 #include "terrain/terrain.h"
-#include "tyre/fiala.h"
+#include "tyre/tyre_model.h"
 #include "vehicle/vehicle_builder.h"
 
 namespace bdfcar::vehicle {
@@ -31,6 +31,7 @@ struct TerrainContactOptions {
   double footprintHalfLength = 0.6;  // of the unloaded radius, for the extra rays
 };
 
+// One wheel's force-law state and latest evaluation (plain data).
 struct WheelContact {
   tyre::ContactPlane plane;
   tyre::SlipState slip;          // transient slips at the last accepted step
@@ -39,6 +40,7 @@ struct WheelContact {
   double brakeCapacity = 0;      // N m available now
   tyre::TyreOutput out;          // of the latest evaluation
   double spinRate = 0;           // absolute, rad/s (latest evaluation)
+  bool operator==(const WheelContact&) const = default;
 };
 
 class VehicleForces final : public mb::ForceProvider {
@@ -58,6 +60,22 @@ class VehicleForces final : public mb::ForceProvider {
   // Resets the per-step states (start of a run).
   void reset(double t);
 
+  // What the force laws carry from step to step, as one value (part of the
+  // run state): per wheel the contact plane, transient slips, brake spring,
+  // held inputs and latest outputs; the time of the last accepted step.
+  struct State {
+    std::array<WheelContact, 4> wheels;
+    double lastAccepted = 0;
+    bool planesReady = false;
+    bool operator==(const State&) const = default;
+  };
+  State state() const { return {wheels_, lastAccepted_, planesReady_}; }
+  void setState(const State& s) {
+    wheels_ = s.wheels;
+    lastAccepted_ = s.lastAccepted;
+    planesReady_ = s.planesReady;
+  }
+
   static constexpr double kBrakeStiffness = 1.0e5;  // N m/rad
   static constexpr double kBrakeDamping = 1.0e3;    // N m s/rad
 
@@ -70,7 +88,7 @@ class VehicleForces final : public mb::ForceProvider {
   const Vehicle& vehicle_;
   const terrain::Terrain& terrain_;
   TerrainContactOptions options_;
-  std::array<tyre::FialaTyre, 4> tyres_;
+  std::array<tyre::Tyre, 4> tyres_;
   std::array<WheelContact, 4> wheels_;
   double lastAccepted_ = 0;
   bool planesReady_ = false;  // contact planes of the next step prepared at acceptance

@@ -77,8 +77,8 @@ VehicleView viewVehicle(const Vehicle& v, const mb::MultibodyDae& dae, const Veh
     WheelView& wv = view.wheels[w];
     wv.pose.position = d.p[b];
     wv.pose.rotation = Eigen::Quaterniond(d.R[b]);
-    wv.radius = v.layout.wheels[w].spec->tyre.unloadedRadius;
-    wv.width = v.layout.wheels[w].spec->tyre.width;
+    wv.radius = tyre::unloadedRadius(v.wheel(w).tyre);
+    wv.width = tyre::width(v.wheel(w).tyre);
     wv.contactPoint = forces.wheels()[w].out.contactPoint;
     wv.normalForce = forces.wheels()[w].out.Fz;
     wv.inContact = forces.wheels()[w].out.inContact;

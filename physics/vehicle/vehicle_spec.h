@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "multibody/model.h"
-#include "tyre/fiala.h"
+#include "tyre/tyre_model.h"
 #include "vehicle/vehicle_view.h"
 
 namespace bdfcar::vehicle {
@@ -59,7 +59,7 @@ struct SpringSpec {
 struct WheelSpec {
   std::string position;        // FL, FR, RL, RR
   std::string spindle;         // body on the spin (revolute) joint
-  tyre::FialaParams tyre;
+  tyre::TyreParams tyre;       // one of the tyre models (tyre/tyre_model.h)
   double spinInertia = 0;      // extra inertia about the spin axis (axle shaft), kg m^2
   double brakeTorque = 0;      // at full brake, N m
   bool driven = false;

@@ -15,8 +15,8 @@ enum class Axis { Steering, Throttle, Brake, Clutch };
 inline constexpr int kAxisCount = 4;
 
 // Edge-triggered commands: true in the one tick in which the button went down.
-enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit };
-inline constexpr int kActionCount = 9;
+enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit, Rewind };
+inline constexpr int kActionCount = 10;
 
 struct Controls {
   // Analog, from the active device (the highest-ranked connected one, else the keyboard).
@@ -36,6 +36,7 @@ struct Controls {
   bool view = false;      // switch the body display (solid, translucent, hidden: the suspension moving)
   bool record = false;
   bool quit = false;
+  bool rewind = false;    // one snapshot (0.5 s) back in the drive
 
   DeviceKind source = DeviceKind::Keyboard;  // the device the analog values came from
 };
@@ -47,7 +48,7 @@ bool actionFlag(const Controls& controls, Action action);
 // The name used in mapping files: "steering", "throttle", "brake", "clutch".
 std::string_view axisName(Axis axis);
 
-// The name used in mapping files: "gear_up", "reset", "single_step", ...
+// The name used in mapping files: "gear_up", "reset", "single_step", "rewind", ...
 std::string_view actionName(Action action);
 
 // The name used in mapping files' `type`: "keyboard", "wheel", "gamecontroller", "joystick".

@@ -1,0 +1,170 @@
+#include "scenario/run.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace bdfcar::scenario {
+
+Run::Run(Simulation& sim, const RunOptions& config) : sim_(sim), config_(config) {
+  try {
+    equilibrium_ = sim_.prepare();
+  } catch (const std::exception& e) {  // cannot assemble, settle or start: the run failed before it began
+    failure_ = e.what();
+    failureTime_ = sim_.time();
+    return;
+  }
+  const ScenarioSpec& spec = sim_.spec();
+  const double h = spec.integrator.step;
+  totalSteps_ = std::lround(spec.duration / h);
+  outputEvery_ = std::max(1L, std::lround(spec.outputInterval / h));
+  if (!config_.telemetryPath.empty())
+    telemetry_ = std::make_unique<TelemetryWriter>(config_.telemetryPath, sim_.vehicle());
+  if (sim_.course()) {
+    const auto& g = sim_.vehicle().spec.geometry;
+    judge_.emplace(*sim_.course(), g.length, vehicleWidth(sim_.vehicle()), g.bodyOffset);
+  }
+  if (config_.sample) sample_ = sim_.sample();
+  if (config_.rewindable) {
+    snapshotEveryTicks_ = std::max(1L, std::lround(config_.snapshotInterval / spec.tick));
+    maxSnapshots_ = static_cast<size_t>(std::max(1L, std::lround(config_.snapshotHistory / config_.snapshotInterval)));
+  }
+  if (config_.rewindable || config_.restartable) initial_ = snapshot();
+  record();
+}
+
+Run::~Run() = default;
+
+void Run::record() {
+  if (!config_.sample) return;
+  const DriverInput in = sim_.lastInput();
+  const TelemetryInputs ti{sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_};
+  if (telemetry_) telemetry_->write(sample_, ti);
+  if (config_.keepSamples) {
+    samples_.push_back(sample_);
+    steerInputs_.push_back(ti.steer);
+  }
+  if (judge_) judge_->update(sample_);
+  if (config_.onSample) config_.onSample(sample_);
+}
+
+bool Run::tick(const std::optional<DriverInput>& input) {
+  if (failed() || finished()) return !failed();
+  if (config_.rewindable && ticks_ > 0 && ticks_ % snapshotEveryTicks_ == 0 &&
+      (snapshots_.empty() || snapshots_.back().ticks != ticks_)) {
+    snapshots_.push_back(snapshot());
+    if (snapshots_.size() > maxSnapshots_) snapshots_.pop_front();
+    snapshotSinceReset_ = true;
+  }
+  sim_.beginTick(input);
+  ++ticks_;
+  for (int i = 0; i < sim_.stepsPerTick() && !finished(); ++i) {
+    const integ::StepReport rep = sim_.step();
+    ++steps_;
+    if (!rep.ok()) {
+      const std::string why = std::string(integ::stepStatusName(rep.status)) + ": " + rep.message.c_str();
+      if (config_.rewindable) {
+        absorbDivergence(why);
+        return true;
+      }
+      failure_ = why;
+      failureTime_ = sim_.time();
+      return false;
+    }
+    lastIterations_ = rep.iterations;
+    lastCorrection_ = rep.correction;
+    if (steps_ % outputEvery_ == 0 && config_.sample) {
+      sample_ = sim_.sample();
+      record();
+    }
+  }
+  return true;
+}
+
+std::string Run::failureText() const {
+  char text[64];
+  std::snprintf(text, sizeof text, "the run failed at t = %.3f s: ", failureTime_);
+  return text + failure_;
+}
+
+Run::Snapshot Run::snapshot() {
+  return {sim_.save(), judge_, sample_, steps_, ticks_, lastIterations_, lastCorrection_};
+}
+
+void Run::restoreSnapshot(const Snapshot& s) {
+  sim_.restore(s.state);
+  judge_ = s.judge;
+  sample_ = s.sample;
+  steps_ = s.steps;
+  ticks_ = s.ticks;
+  lastIterations_ = s.lastIterations;
+  lastCorrection_ = s.lastCorrection;
+  failure_.clear();
+}
+
+// A divergence in a rewindable run: back to the last good snapshot. A
+// snapshot the run has diverged from again before taking a newer one is
+// dropped (it leads to the same failure), down to the initial state.
+void Run::absorbDivergence(const std::string& why) {
+  const double at = sim_.time();
+  if (!snapshotSinceReset_ && !snapshots_.empty()) snapshots_.pop_back();
+  const Snapshot& back = snapshots_.empty() ? *initial_ : snapshots_.back();
+  restoreSnapshot(back);
+  snapshotSinceReset_ = false;
+  ++resets_;
+  char text[96];
+  std::snprintf(text, sizeof text, "diverged at t = %.2f s, back to t = %.2f s: ", at, sim_.time());
+  notice_ = text + why;
+}
+
+void Run::restart() {
+  if (!initial_) throw std::logic_error("Run::restart needs a restartable run");
+  restoreSnapshot(*initial_);
+  snapshots_.clear();
+  snapshotSinceReset_ = true;
+  notice_.clear();
+}
+
+bool Run::rewind() {
+  if (!config_.rewindable) return false;
+  // The newest snapshot taken before this tick; a snapshot taken at this very
+  // tick (nothing has run since) is skipped so that a press always goes back.
+  while (!snapshots_.empty() && snapshots_.back().ticks >= ticks_) snapshots_.pop_back();
+  if (snapshots_.empty()) {
+    if (ticks_ == 0) return false;
+    restoreSnapshot(*initial_);
+  } else {
+    restoreSnapshot(snapshots_.back());
+  }
+  snapshotSinceReset_ = true;
+  return true;
+}
+
+std::optional<CourseResult> Run::course() const {
+  if (!judge_) return std::nullopt;
+  return judge_->result();
+}
+
+RunResult runScenario(Simulation& sim, const RunOptions& options) {
+  RunResult r;
+  std::optional<Run> run;
+  run.emplace(sim, options);
+  r.equilibrium = run->equilibrium();
+  const auto wall0 = std::chrono::steady_clock::now();
+  while (!run->finished() && run->tick(std::nullopt)) {
+  }
+  r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  r.ok = !run->failed();
+  r.failure = run->failure();
+  r.failureTime = run->failureTime();
+  r.steps = run->steps();
+  r.simulatedSeconds = r.steps * sim.spec().integrator.step;
+  r.course = run->course();
+  r.counters = sim.integrator().counters();
+  r.timers = sim.integrator().timers();
+  r.samples = std::move(run->samples());
+  r.steerInputs = std::move(run->steerInputs());
+  return r;
+}
+
+}  // namespace bdfcar::scenario

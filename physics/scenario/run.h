@@ -1,0 +1,137 @@
+// The one run driver of every command (`run`, `render`, `demo`, `drive`, the
+// report and the tests): prepares a Simulation, advances it tick by tick
+// with a driver's input, records telemetry and samples at the output
+// interval, judges the course, and words a failure one way. A rewindable run
+// also keeps the initial state (restart is an assignment) and snapshots every
+// snapshotInterval of simulated time; on a divergence it goes back to the
+// last good snapshot instead of stopping. Interactive drawing, devices and
+// input recording are the callers' (app/session, app/interactive).
+#pragma once
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenario/course_judge.h"
+#include "scenario/simulation.h"
+#include "scenario/telemetry.h"
+
+namespace bdfcar::scenario {
+
+struct RunOptions {
+  std::string telemetryPath;        // empty: no file
+  bool sample = true;               // false: no samples at all (timing the steps alone)
+  bool keepSamples = true;          // keep every sample in memory (RunResult::samples)
+  // Called after each recorded sample (e.g. a course judge).
+  std::function<void(const vehicle::VehicleSample&)> onSample;
+  // Rewind: keep the initial state and a snapshot every snapshotInterval of
+  // simulated time for the last snapshotHistory; a divergence then resets to
+  // the last good snapshot (a message says so) instead of ending the run.
+  bool rewindable = false;
+  bool restartable = false;         // keep the initial state for restart() (implied by rewindable)
+  double snapshotInterval = 0.5;    // s
+  double snapshotHistory = 30.0;    // s
+};
+
+struct RunResult {
+  bool ok = true;
+  std::string failure;              // at which time and which check, when !ok
+  double failureTime = 0;
+  vehicle::EquilibriumReport equilibrium;
+  long steps = 0;                   // manoeuvre steps (settling excluded)
+  integ::Counters counters;         // whole run, settling included
+  integ::Timers timers;
+  double wallSeconds = 0;           // manoeuvre only
+  double simulatedSeconds = 0;      // manoeuvre only
+  std::vector<vehicle::VehicleSample> samples;  // one per output interval (when kept)
+  std::vector<double> steerInputs;  // steering input per sample
+  std::optional<CourseResult> course;  // when the scenario has a course
+};
+
+class Run {
+ public:
+  // Prepares the simulation and records the first sample. A vehicle that
+  // cannot be assembled, settled or started makes a failed run (failed());
+  // a telemetry file that cannot be opened throws.
+  Run(Simulation& sim, const RunOptions& config);
+  ~Run();
+
+  // One driver tick: the given input (a person's, a replay's) or, with
+  // nullopt, the scenario's own driver; then the tick's integration steps
+  // (fewer at the end of the manoeuvre). Returns false once the run failed.
+  bool tick(const std::optional<DriverInput>& input);
+  // Back to the start of the manoeuvre (restartable runs: an assignment).
+  void restart();
+  // One snapshot back (rewindable runs); false when there is none.
+  bool rewind();
+
+  bool failed() const { return !failure_.empty(); }
+  const std::string& failure() const { return failure_; }    // "diverged: Newton ..." 
+  double failureTime() const { return failureTime_; }
+  // The one wording of a failure for every command.
+  std::string failureText() const;
+  bool finished() const { return failed() || steps_ >= totalSteps_; }
+  long steps() const { return steps_; }
+  long ticks() const { return ticks_; }
+  double time() const { return sim_.time(); }
+  // Divergences absorbed by going back to a snapshot, and the last message.
+  int resets() const { return resets_; }
+  const std::string& notice() const { return notice_; }
+  size_t snapshots() const { return snapshots_.size(); }
+
+  Simulation& simulation() { return sim_; }
+  const vehicle::EquilibriumReport& equilibrium() const { return equilibrium_; }
+  const vehicle::VehicleSample& lastSample() const { return sample_; }
+  std::optional<CourseResult> course() const;
+  // Moves the kept samples out (RunResult).
+  std::vector<vehicle::VehicleSample>& samples() { return samples_; }
+  std::vector<double>& steerInputs() { return steerInputs_; }
+
+ private:
+  // What a rewind restores: the simulation's run state and the driver's
+  // bookkeeping around it.
+  struct Snapshot {
+    RunState state;
+    std::optional<CourseJudge> judge;
+    vehicle::VehicleSample sample;
+    long steps = 0, ticks = 0;
+    int lastIterations = 0;
+    double lastCorrection = 0;
+  };
+  Snapshot snapshot();
+  void restoreSnapshot(const Snapshot& s);
+  void record();
+  void absorbDivergence(const std::string& why);
+
+  Simulation& sim_;
+  RunOptions config_;
+  vehicle::EquilibriumReport equilibrium_;
+  std::unique_ptr<TelemetryWriter> telemetry_;
+  std::optional<CourseJudge> judge_;
+  vehicle::VehicleSample sample_;
+  std::vector<vehicle::VehicleSample> samples_;
+  std::vector<double> steerInputs_;
+  long steps_ = 0, ticks_ = 0, totalSteps_ = 0, outputEvery_ = 1;
+  int lastIterations_ = 0;
+  double lastCorrection_ = 0;
+  std::string failure_;
+  double failureTime_ = 0;
+  // Rewind.
+  std::optional<Snapshot> initial_;
+  std::deque<Snapshot> snapshots_;
+  long snapshotEveryTicks_ = 0;
+  size_t maxSnapshots_ = 0;
+  bool snapshotSinceReset_ = true;
+  int resets_ = 0;
+  std::string notice_;
+};
+
+// A whole scenario with its scripted driver, start to end: telemetry to
+// options.telemetryPath, samples kept when asked. Never throws for a run that
+// fails (RunResult::ok, failure).
+RunResult runScenario(Simulation& sim, const RunOptions& options = {});
+
+}  // namespace bdfcar::scenario

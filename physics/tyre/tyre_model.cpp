@@ -1,0 +1,27 @@
+#include "tyre/tyre_model.h"
+
+namespace bdfcar::tyre {
+
+double unloadedRadius(const TyreParams& p) {
+  return std::visit([](const auto& m) { return m.unloadedRadius; }, p);
+}
+
+double width(const TyreParams& p) {
+  return std::visit([](const auto& m) { return m.width; }, p);
+}
+
+namespace {
+// The model of each kind of tyre data (one overload per alternative).
+FialaTyre modelFor(const FialaParams& p) { return FialaTyre(p); }
+}  // namespace
+
+Tyre::Tyre(const TyreParams& p)
+    : model_(std::visit([](const auto& m) { return std::variant<FialaTyre>(modelFor(m)); }, p)),
+      radius_(tyre::unloadedRadius(p)) {}
+
+TyreOutput Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
+                          double h) const {
+  return std::visit([&](const auto& m) { return m.evaluate(wheel, ground, previous, h); }, model_);
+}
+
+}  // namespace bdfcar::tyre

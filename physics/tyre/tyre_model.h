@@ -1,0 +1,34 @@
+// The tyre models bdfcar has, as a closed set dispatched like the joint
+// types (no virtual interface): a second model is one more alternative in
+// TyreParams and Tyre, one more branch in tyre_model.cpp and one in the
+// vehicle loader's [tyres] reader; nothing else changes.
+#pragma once
+
+#include <variant>
+
+#include "tyre/fiala.h"
+
+namespace bdfcar::tyre {
+
+// A tyre's data as read from a vehicle file.
+using TyreParams = std::variant<FialaParams>;
+
+double unloadedRadius(const TyreParams& p);
+double width(const TyreParams& p);
+
+// One tyre: its model with its data. `previous` are the transient slips at
+// the last accepted step, h the time since then (the evaluation integrates
+// them by backward Euler, so it is implicit in the current state).
+class Tyre {
+ public:
+  explicit Tyre(const TyreParams& p);
+  TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
+                      double h) const;
+  double unloadedRadius() const { return radius_; }
+
+ private:
+  std::variant<FialaTyre> model_;
+  double radius_;
+};
+
+}  // namespace bdfcar::tyre
