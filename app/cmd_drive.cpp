@@ -54,8 +54,8 @@ int runDrive(const DriveArgs& a) {
     std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course", c->coneHits,
                 c->coneHits == 1 ? "" : "s", c->exitTime >= 0 ? c->exitTime - c->entryTime : -1.0);
   if (session.resets() > 0)
-    std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s\n", session.resets(),
-                session.resets() == 1 ? "" : "s", session.notice().c_str());
+    std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
+                session.resets() == 1 ? "" : "s", session.notice().c_str(), session.lastDivergence().c_str());
   if (session.failed()) {
     std::fprintf(stderr, "error: %s\n", session.failure().c_str());
     return 3;

@@ -1,5 +1,5 @@
 // Vehicle files, assembly and static equilibrium against the published
-// figures of the reference sedan (shared/reference/sedan.md), and the errors
+// figures of the reference sedan (docs/reference-vehicle.md), and the errors
 // a bad vehicle file must give.
 #include <gtest/gtest.h>
 
@@ -86,7 +86,7 @@ TEST(VehicleFile, PaperTopologyHasThePapersCounts) {
 
 TEST(VehicleFile, SedanIsTheReferenceVehicleJointForJoint) {
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/sedan.toml")));
-  // sedan.md section 3: total mass 2422.30 kg, 20 bodies (chassis, rack, 2 x 4 front, 2 x 5 rear).
+  // docs/reference-vehicle.md 3: total mass 2422.30 kg, 20 bodies (chassis, rack, 2 x 4 front, 2 x 5 rear).
   EXPECT_NEAR(v.model.totalMass(), 2422.304, 1e-9);
   EXPECT_EQ(v.model.bodies.size(), 20u);
   // Front: LCA revolute, strut universal, upright cylindrical, spindle revolute.
@@ -133,7 +133,7 @@ TEST(StaticEquilibrium, SedanMatchesThePublishedState) {
   ASSERT_TRUE(s.eq.converged) << s.eq.message;
   // Wheel loads sum to the weight (vertical equilibrium).
   EXPECT_NEAR(s.eq.totalLoad, 2422.304 * 9.81, 1e-6 * s.eq.weight);
-  // sedan.md section 11 (measured in Chrono at 80 km/h, where rolling
+  // docs/reference-vehicle.md 11 (measured in Chrono at 80 km/h, where rolling
   // resistance and the 13.5 N m drive torque shift a few newtons; we settle at
   // rest): loads within 0.1 %, ride height and pitch within 0.02 mm / 0.002 deg.
   const double ref[4] = {6298.88, 6295.86, 5581.94, 5585.99};

@@ -85,6 +85,7 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
   if (session_.resets() != resetsSeen_) {
     resetsSeen_ = session_.resets();
     say(session_.notice());
+    std::fprintf(stderr, "%s: %s\n", session_.notice().c_str(), session_.lastDivergence().c_str());
   }
   return out;
 }

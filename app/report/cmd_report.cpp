@@ -60,7 +60,7 @@ void referenceSection(std::ostream& md, const ReportArgs& a, const fs::path& ima
   };
   md << "## 1. The J-turn against the independent reference\n\n"
      << "The reference sedan's J-turn (80 km/h, steering ramp 0 -> 0.2 at 1.0-1.2 s) against "
-     << "`tests/data/ref_jturn.csv` (Chrono 9.0.1, 31.25 us, converged; shared/reference). RMS difference as % of "
+     << "`tests/data/ref_jturn.csv` (Chrono 9.0.1, 31.25 us, converged; docs/reference-vehicle.md 12). RMS difference as % of "
      << "the reference's peak, and the largest absolute difference (rad/s, m/s^2, rad, m):\n\n"
      << "| run | yaw rate RMS | max | a_y RMS | max | roll RMS | max | dz_COM RMS | max |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
@@ -85,7 +85,7 @@ void referenceSection(std::ostream& md, const ReportArgs& a, const fs::path& ima
     ay.push_back(column(r.samples, "ay"));
   }
   md << "\nThe bar: about 1 % at 1 ms, at most 3 % at the paper's setting, where the reference code itself "
-     << "diverges (shared/reference/README.md: Chrono diverges at 10 ms). dz_COM peaks at a fraction of a "
+     << "diverges (docs/reference-vehicle.md 12.8: Chrono diverges at 10 ms). dz_COM peaks at a fraction of a "
      << "millimetre, so its relative figure is large while the absolute difference stays in micrometres.\n\n";
   command(md, "assets/scenarios/jturn.toml --vehicle assets/vehicles/sedan.toml --step 0.001 --newton 0 "
               "--jacobian-every 1");

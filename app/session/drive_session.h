@@ -52,6 +52,7 @@ class DriveSession {
   std::string failure() const { return run_->failureText(); }
   // The last divergence absorbed by going back to a snapshot ("" if none).
   const std::string& notice() const { return run_->notice(); }
+  const std::string& lastDivergence() const { return run_->lastDivergence(); }
   int resets() const { return run_->resets(); }
   double time() const { return sim_->time(); }
   long ticks() const { return run_->ticks(); }

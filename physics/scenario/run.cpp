@@ -62,12 +62,11 @@ bool Run::tick(const std::optional<DriverInput>& input) {
     const integ::StepReport rep = sim_.step();
     ++steps_;
     if (!rep.ok()) {
-      const std::string why = std::string(integ::stepStatusName(rep.status)) + ": " + rep.message.c_str();
       if (config_.rewindable) {
-        absorbDivergence(why);
+        absorbDivergence(rep);
         return true;
       }
-      failure_ = why;
+      failure_ = std::string(integ::stepStatusName(rep.status)) + ": " + rep.message.c_str();
       failureTime_ = sim_.time();
       return false;
     }
@@ -105,16 +104,19 @@ void Run::restoreSnapshot(const Snapshot& s) {
 // A divergence in a rewindable run: back to the last good snapshot. A
 // snapshot the run has diverged from again before taking a newer one is
 // dropped (it leads to the same failure), down to the initial state.
-void Run::absorbDivergence(const std::string& why) {
+void Run::absorbDivergence(const integ::StepReport& rep) {
   const double at = sim_.time();
   if (!snapshotSinceReset_ && !snapshots_.empty()) snapshots_.pop_back();
   const Snapshot& back = snapshots_.empty() ? *initial_ : snapshots_.back();
   restoreSnapshot(back);
   snapshotSinceReset_ = false;
   ++resets_;
-  char text[96];
-  std::snprintf(text, sizeof text, "diverged at t = %.2f s, back to t = %.2f s: ", at, sim_.time());
-  notice_ = text + why;
+  auto shown = [](double t) { return std::abs(t) < 5e-3 ? 0.0 : t; };  // no "-0.00"
+  char text[128];
+  std::snprintf(text, sizeof text, "diverged at t = %.2f s (%s), back to t = %.2f s", shown(at),
+                integ::stepStatusName(rep.status), shown(sim_.time()));
+  notice_ = text;
+  divergence_ = rep.message.c_str();
 }
 
 void Run::restart() {

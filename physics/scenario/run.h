@@ -77,9 +77,11 @@ class Run {
   long steps() const { return steps_; }
   long ticks() const { return ticks_; }
   double time() const { return sim_.time(); }
-  // Divergences absorbed by going back to a snapshot, and the last message.
+  // Divergences absorbed by going back to a snapshot: how many, the last one
+  // in a line for the HUD, and what the integrator said of it.
   int resets() const { return resets_; }
   const std::string& notice() const { return notice_; }
+  const std::string& lastDivergence() const { return divergence_; }
   size_t snapshots() const { return snapshots_.size(); }
 
   Simulation& simulation() { return sim_; }
@@ -104,7 +106,7 @@ class Run {
   Snapshot snapshot();
   void restoreSnapshot(const Snapshot& s);
   void record();
-  void absorbDivergence(const std::string& why);
+  void absorbDivergence(const integ::StepReport& rep);
 
   Simulation& sim_;
   RunOptions config_;
@@ -126,7 +128,7 @@ class Run {
   size_t maxSnapshots_ = 0;
   bool snapshotSinceReset_ = true;
   int resets_ = 0;
-  std::string notice_;
+  std::string notice_, divergence_;
 };
 
 // A whole scenario with its scripted driver, start to end: telemetry to

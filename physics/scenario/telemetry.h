@@ -1,6 +1,6 @@
 // Telemetry CSV: one row per output interval, a header of named columns with
-// units, the same names as shared/reference/ref_jturn.csv for the same
-// quantities, then bdfcar's own columns. Values are written with a fixed
+// units, the same names as tests/data/ref_jturn.csv (docs/reference-vehicle.md
+// 12.5) for the same quantities, then bdfcar's own columns. Values are written with a fixed
 // format so that identical runs give identical files.
 #pragma once
 

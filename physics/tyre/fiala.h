@@ -1,5 +1,5 @@
-// Fiala tyre as specified for the reference sedan (shared/reference/sedan.md
-// section 7.1, Chrono 9.0.1 ChFialaTire): single-point contact, linear
+// Fiala tyre as specified for the reference sedan (docs/reference-vehicle.md
+// 7.1, Chrono 9.0.1 ChFialaTire): single-point contact, linear
 // vertical spring-damper, combined slip only through the friction factor
 // U(S), forces applied at the point delta above the contact point, rolling
 // resistance as a moment. A continuous (lag-free) implementation.

@@ -1,6 +1,6 @@
 // What a person commands in one tick, as plain data: the output of
 // InputSystem::poll(). No SDL types; the app maps it onto the physics'
-// DriverInput (input/ depends on nothing of ours).
+// DriverInput (input/ uses only physics/config, to read its mapping files).
 #pragma once
 
 #include <string_view>

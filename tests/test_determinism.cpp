@@ -1,0 +1,108 @@
+// Determinism across processes and commits: the telemetry of the J-turn and
+// of a replayed drive hash to the values recorded in
+// tests/data/golden_hashes.txt for this build flavour (the AVX2/FMA build
+// rounds differently from the generic one). A change of the numbers, meant
+// or not, fails here; when it is meant, regenerate the file with
+// scripts/update-golden.sh and say why in the commit.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "scenario/run.h"
+#include "session/drive_session.h"
+
+using namespace bdfcar;
+
+namespace {
+
+const std::string kSource = BDFCAR_SOURCE_DIR;
+const std::string kGolden = kSource + "/tests/data/golden_hashes.txt";
+
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("bdfcar_golden_" + name)).string();
+}
+
+// FNV-1a, 64 bits, of a file's bytes.
+std::string fileHash(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::uint64_t h = 1469598103934665603ull;
+  char c;
+  std::size_t n = 0;
+  while (f.get(c)) {
+    h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    ++n;
+  }
+  EXPECT_GT(n, 10000u) << path << ": telemetry too short";
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+// "flavour case" -> hash, from the golden file.
+std::map<std::string, std::string> readGolden() {
+  std::map<std::string, std::string> m;
+  std::ifstream f(kGolden);
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    std::string flavour, name, hash;
+    if (s >> flavour >> name >> hash) m[flavour + " " + name] = hash;
+  }
+  return m;
+}
+
+void writeGolden(const std::map<std::string, std::string>& m) {
+  std::ofstream f(kGolden);
+  f << "# Telemetry hashes (FNV-1a 64) per build flavour: flavour case hash.\n"
+       "# Written by scripts/update-golden.sh (BDFCAR_UPDATE_GOLDEN=1); checked by test_determinism.\n";
+  for (const auto& [key, hash] : m) f << key << " " << hash << "\n";
+}
+
+void checkGolden(const std::string& name, const std::string& hash) {
+  const std::string key = std::string(BDFCAR_FLAVOUR) + " " + name;
+  std::map<std::string, std::string> golden = readGolden();
+  if (const char* u = std::getenv("BDFCAR_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    golden[key] = hash;
+    writeGolden(golden);
+    std::printf("golden hash of %s recorded: %s\n", key.c_str(), hash.c_str());
+    return;
+  }
+  ASSERT_TRUE(golden.count(key)) << "no golden hash for '" << key << "' in " << kGolden
+                                 << ": record it with scripts/update-golden.sh";
+  EXPECT_EQ(hash, golden[key]) << key << ": the telemetry changed. If the change is meant, regenerate with "
+                                          "scripts/update-golden.sh and say why in the commit.";
+}
+
+}  // namespace
+
+TEST(Golden, JTurnTelemetryHash) {
+  scenario::Simulation sim(scenario::loadScenarioFile(kSource + "/assets/scenarios/jturn.toml"));
+  scenario::RunOptions o;
+  o.telemetryPath = temp("jturn.csv");
+  o.keepSamples = false;
+  ASSERT_TRUE(scenario::runScenario(sim, o).ok);
+  checkGolden("jturn", fileHash(o.telemetryPath));
+}
+
+TEST(Golden, ReplayedDriveTelemetryHash) {
+  // A recorded drive (tests/data/weave_300.rec) replayed as `drive --replay
+  // --batch` does: a rewindable session, the recording's ticks.
+  const app::Recording rec = app::readRecording(kSource + "/tests/data/weave_300.rec");
+  ASSERT_EQ(rec.inputCount(), 300);
+  app::SessionOptions so;
+  so.telemetryPath = temp("drive.csv");
+  so.rewindable = true;
+  {
+    app::DriveSession drive(scenario::loadScenarioFile(kSource + "/assets/scenarios/drive.toml"), so);
+    for (const app::RecordedTick& e : rec.entries) ASSERT_TRUE(drive.replay(e));
+    EXPECT_NEAR(drive.time(), 3.0, 1e-9);
+  }
+  checkGolden("drive_replay", fileHash(so.telemetryPath));
+}

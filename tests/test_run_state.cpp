@@ -1,0 +1,193 @@
+// The run state as one value and the driver's tick: save / restore repeats a
+// run bit for bit, a rewind goes back to a snapshot and repeats what followed
+// it, the driver's tick is independent of the integration step, and a
+// divergence in a rewindable run goes back to the last good snapshot.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "scenario/run.h"
+#include "scenario/simulation.h"
+
+using namespace bdfcar;
+
+namespace {
+
+std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("bdfcar_runstate_" + name)).string();
+}
+std::string readFile(const std::string& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// A person's input at tick i: weaving, throttle, then brakes.
+scenario::DriverInput personAt(int i) {
+  const double t = 0.01 * i;
+  return {0.3 * std::sin(2.0 * t) + 0.05 * std::sin(37.0 * t), t < 1.5 ? 0.6 : 0.0, t > 2.2 ? 0.4 : 0.0};
+}
+
+// Telemetry rows of `ticks` driver ticks from the current state, as CSV text.
+std::string driveTicks(scenario::Simulation& sim, int first, int ticks, const std::string& file) {
+  {
+    scenario::TelemetryWriter w(file, sim.vehicle());
+    for (int i = first; i < first + ticks; ++i) {
+      sim.beginTick(personAt(i));
+      for (int k = 0; k < sim.stepsPerTick(); ++k) EXPECT_TRUE(sim.step().ok());
+      w.write(sim.sample(), {sim.steerAt(sim.time()), 0, 0, 0, 0});
+    }
+  }
+  return readFile(file);
+}
+
+}  // namespace
+
+TEST(RunState, SaveStep200RestoreStep200IsBitIdentical) {
+  scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/drive.toml")));
+  sim.prepare();
+  driveTicks(sim, 0, 50, temp("warmup.csv"));  // away from the start, mid-manoeuvre
+  const scenario::RunState saved = sim.save();
+  const std::string first = driveTicks(sim, 50, 200, temp("a.csv"));
+  const scenario::RunState after = sim.save();
+  EXPECT_FALSE(after == saved) << "the state moved on";
+  sim.restore(saved);
+  const std::string second = driveTicks(sim, 50, 200, temp("b.csv"));
+  EXPECT_GT(first.size(), 20000u);
+  EXPECT_EQ(first, second) << "the restored run differs";
+  EXPECT_TRUE(sim.save() == after) << "and so does its final state";
+}
+
+TEST(RunState, ACopiedStateComparesEqualAndADifferentOneDoesNot) {
+  scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/jturn.toml")));
+  sim.prepare();
+  const scenario::RunState a = sim.save();
+  scenario::RunState b = a;
+  EXPECT_TRUE(a == b);
+  b.integrator.history.front().v(0) = std::nextafter(b.integrator.history.front().v(0), 1e9);
+  EXPECT_FALSE(a == b) << "one ulp of one velocity";
+  b = a;
+  b.forces.wheels[2].brakeDeflection += 1e-12;
+  EXPECT_FALSE(a == b) << "a force-law state";
+}
+
+TEST(Tick, ADriverTickRunsTickOverStepStepsWhateverTheStep) {
+  // 300 ticks of a person's input end at 3 s of simulated time with 10, 5
+  // and 2.5 ms steps, and the runs agree with each other (the same car, the
+  // same driver, a finer step).
+  double yFinal[3] = {};
+  const double steps[3] = {0.01, 0.005, 0.0025};
+  for (int k = 0; k < 3; ++k) {
+    scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+    spec.integrator.step = steps[k];
+    scenario::Simulation sim(spec);
+    scenario::RunOptions o;
+    o.keepSamples = false;
+    scenario::Run run(sim, o);
+    ASSERT_FALSE(run.failed()) << run.failure();
+    EXPECT_EQ(sim.stepsPerTick(), std::lround(0.01 / steps[k]));
+    for (int i = 0; i < 300; ++i) ASSERT_TRUE(run.tick(personAt(i))) << run.failureText();
+    EXPECT_NEAR(run.time(), 3.0, 1e-9) << "step " << steps[k];
+    EXPECT_EQ(run.steps(), 300 * sim.stepsPerTick());
+    yFinal[k] = run.lastSample().com.y();
+    EXPECT_GT(std::abs(yFinal[k] - spec.startY), 0.5) << "the car weaved";
+  }
+  // The same drive: the lateral position after 3 s of weaving agrees to
+  // millimetres across the steps (it moves by metres).
+  EXPECT_NEAR(yFinal[0], yFinal[2], 0.005) << "m";
+  EXPECT_NEAR(yFinal[1], yFinal[2], 0.005) << "m";
+}
+
+TEST(Tick, AStepThatDoesNotDivideTheTickIsRefused) {
+  EXPECT_EQ(scenario::stepsPerTick(0.01, 0.0025), 4);
+  EXPECT_EQ(scenario::stepsPerTick(0.01, 0.01), 1);
+  EXPECT_EQ(scenario::stepsPerTick(0.01, 0.003), 0);
+  EXPECT_EQ(scenario::stepsPerTick(0.01, 0.02), 0);
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  spec.integrator.step = 0.003;
+  try {
+    scenario::Simulation sim(spec);
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("does not divide the driver's tick"), std::string::npos) << e.what();
+  }
+  // In a file: the key and its line.
+  const std::string bad = temp("bad_step.toml");
+  std::ofstream(bad) << "[scenario]\nname = \"x\"\nvehicle = \"" << asset("vehicles/sedan.toml")
+                     << "\"\nduration = \"1 s\"\n[integrator]\nstep = \"3 ms\"\n";
+  try {
+    scenario::loadScenarioFile(bad);
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_step.toml:6"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("divides the driver's tick"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Rewind, GoingBackASnapshotRepeatsWhatFollowedIt) {
+  scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/drive.toml")));
+  scenario::RunOptions o;
+  o.keepSamples = false;
+  o.rewindable = true;
+  scenario::Run run(sim, o);
+  for (int i = 0; i < 130; ++i) ASSERT_TRUE(run.tick(personAt(i)));
+  const vehicle::VehicleSample original = run.lastSample();
+  const scenario::RunState stateAt130 = sim.save();
+  ASSERT_TRUE(run.rewind());
+  EXPECT_EQ(run.ticks(), 100) << "snapshots every 0.5 s: back to tick 100";
+  EXPECT_NEAR(run.time(), 1.0, 1e-9);
+  for (int i = 100; i < 130; ++i) ASSERT_TRUE(run.tick(personAt(i)));
+  EXPECT_EQ(std::memcmp(&run.lastSample().com, &original.com, sizeof original.com), 0);
+  EXPECT_EQ(run.lastSample().yawRate, original.yawRate);
+  EXPECT_TRUE(sim.save().integrator.history == stateAt130.integrator.history);
+  // Back twice: 1.0 s, then 0.5 s; at the start there is nothing before.
+  ASSERT_TRUE(run.rewind());
+  ASSERT_TRUE(run.rewind());
+  EXPECT_NEAR(run.time(), 0.5, 1e-9);
+  ASSERT_TRUE(run.rewind());
+  EXPECT_NEAR(run.time(), 0.0, 1e-9);
+  EXPECT_FALSE(run.rewind());
+}
+
+TEST(Rewind, RestartIsAnAssignmentOfTheInitialState) {
+  scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/drive.toml")));
+  scenario::RunOptions o;
+  o.keepSamples = false;
+  o.restartable = true;
+  scenario::Run run(sim, o);
+  const vehicle::VehicleSample start = run.lastSample();
+  for (int i = 0; i < 80; ++i) ASSERT_TRUE(run.tick(personAt(i)));
+  run.restart();
+  EXPECT_EQ(run.ticks(), 0);
+  EXPECT_EQ(sim.time(), start.t);
+  EXPECT_EQ(sim.sample().com.x(), start.com.x());
+}
+
+TEST(Rewind, ADivergenceGoesBackToTheLastGoodSnapshotInsteadOfEndingTheRun) {
+  // Semi-implicit Euler at 10 ms diverges on this car (docs/RESULTS.md 4);
+  // a rewindable run absorbs each divergence and keeps going.
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  spec.integrator.method = scenario::IntegratorMethod::SemiImplicitEuler;
+  spec.settleTime = 0;
+  scenario::Simulation sim(spec);
+  scenario::RunOptions o;
+  o.keepSamples = false;
+  o.rewindable = true;
+  scenario::Run run(sim, o);
+  ASSERT_FALSE(run.failed()) << run.failure();
+  for (int i = 0; i < 200; ++i) ASSERT_TRUE(run.tick(personAt(i)));
+  EXPECT_FALSE(run.failed());
+  EXPECT_GT(run.resets(), 0);
+  EXPECT_NE(run.notice().find("back to t = "), std::string::npos) << run.notice();
+  EXPECT_TRUE(sim.save().integrator.history.front().q.allFinite());
+  // The same scenario without rewind ends with the one failure text.
+  scenario::Simulation sim2(spec);
+  scenario::Run plain(sim2, {});
+  while (!plain.finished() && plain.tick(personAt(0))) {
+  }
+  ASSERT_TRUE(plain.failed());
+  EXPECT_NE(plain.failureText().find("the run failed at t = "), std::string::npos) << plain.failureText();
+}
