@@ -44,6 +44,15 @@ std::string driveTicks(scenario::Simulation& sim, int first, int ticks, const st
   return readFile(file);
 }
 
+// A run that keeps no samples in memory; rewindable or only restartable.
+scenario::RunOptions runOptions(bool rewindable) {
+  scenario::RunOptions o;
+  o.keepSamples = false;
+  o.rewindable = rewindable;
+  o.restartable = true;
+  return o;
+}
+
 }  // namespace
 
 TEST(RunState, SaveStep200RestoreStep200IsBitIdentical) {
@@ -84,9 +93,7 @@ TEST(Tick, ADriverTickRunsTickOverStepStepsWhateverTheStep) {
     scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
     spec.integrator.step = steps[k];
     scenario::Simulation sim(spec);
-    scenario::RunOptions o;
-    o.keepSamples = false;
-    scenario::Run run(sim, o);
+    scenario::Run run(sim, runOptions(false));
     ASSERT_FALSE(run.failed()) << run.failure();
     EXPECT_EQ(sim.stepsPerTick(), std::lround(0.01 / steps[k]));
     for (int i = 0; i < 300; ++i) ASSERT_TRUE(run.tick(personAt(i))) << run.failureText();
@@ -129,10 +136,7 @@ TEST(Tick, AStepThatDoesNotDivideTheTickIsRefused) {
 
 TEST(Rewind, GoingBackASnapshotRepeatsWhatFollowedIt) {
   scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/drive.toml")));
-  scenario::RunOptions o;
-  o.keepSamples = false;
-  o.rewindable = true;
-  scenario::Run run(sim, o);
+  scenario::Run run(sim, runOptions(true));
   for (int i = 0; i < 130; ++i) ASSERT_TRUE(run.tick(personAt(i)));
   const vehicle::VehicleSample original = run.lastSample();
   const scenario::RunState stateAt130 = sim.save();
@@ -154,10 +158,7 @@ TEST(Rewind, GoingBackASnapshotRepeatsWhatFollowedIt) {
 
 TEST(Rewind, RestartIsAnAssignmentOfTheInitialState) {
   scenario::Simulation sim(scenario::loadScenarioFile(asset("scenarios/drive.toml")));
-  scenario::RunOptions o;
-  o.keepSamples = false;
-  o.restartable = true;
-  scenario::Run run(sim, o);
+  scenario::Run run(sim, runOptions(false));
   const vehicle::VehicleSample start = run.lastSample();
   for (int i = 0; i < 80; ++i) ASSERT_TRUE(run.tick(personAt(i)));
   run.restart();
@@ -173,10 +174,7 @@ TEST(Rewind, ADivergenceGoesBackToTheLastGoodSnapshotInsteadOfEndingTheRun) {
   spec.integrator.method = scenario::IntegratorMethod::SemiImplicitEuler;
   spec.settleTime = 0;
   scenario::Simulation sim(spec);
-  scenario::RunOptions o;
-  o.keepSamples = false;
-  o.rewindable = true;
-  scenario::Run run(sim, o);
+  scenario::Run run(sim, runOptions(true));
   ASSERT_FALSE(run.failed()) << run.failure();
   for (int i = 0; i < 200; ++i) ASSERT_TRUE(run.tick(personAt(i)));
   EXPECT_FALSE(run.failed());
