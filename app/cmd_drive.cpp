@@ -4,7 +4,12 @@
 #include <cstdio>
 #include <memory>
 
+#include <cstdlib>
+#include <filesystem>
+
 #include "cli_errors.h"
+#include "interrupt.h"
+#include "scenario/row_file.h"
 #include "commands.h"
 #include "demo_common.h"
 #include "interactive/drive_loop.h"
@@ -14,19 +19,39 @@ namespace bdfcar::app {
 
 namespace {
 
+// Where F9 keeps its recordings: $XDG_DATA_HOME/bdfcar/recordings, else
+// ~/.local/share/bdfcar/recordings, else ./recordings.
+std::string defaultRecordDir() {
+  if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x) return std::string(x) + "/bdfcar/recordings";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.local/share/bdfcar/recordings";
+  return "recordings";
+}
+
 struct DriveArgs {
   std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive.toml";
-  std::string record, replay, telemetry, screenshot, mappings, size = "1280x720";
+  std::string record, replay, telemetry, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
   double seconds = 0;
-  bool batch = false, noVsync = false;
+  bool batch = false, noVsync = false, replayAnyway = false, scenarioGiven = false;
   ScenarioOverrides overrides;
 };
 
 int runDrive(const DriveArgs& a) {
-  scenario::ScenarioSpec spec = scenario::loadScenarioFile(a.scenario);
-  applyOverrides(a.overrides, spec);
   std::unique_ptr<Recording> replay;
   if (!a.replay.empty()) replay = std::make_unique<Recording>(readRecording(a.replay));
+  // A replay without a scenario on the command line replays against the one it names.
+  std::string scenarioFile = a.scenario;
+  if (replay && !a.scenarioGiven && !replay->scenarioFile.empty() && std::filesystem::is_regular_file(replay->scenarioFile))
+    scenarioFile = replay->scenarioFile;
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(scenarioFile);
+  applyOverrides(a.overrides, spec);
+  if (replay && !a.replayAnyway) {
+    const std::string why = replayMismatch(*replay, spec);
+    if (!why.empty())
+      throw std::runtime_error(a.replay + ": " + why + ": the replay would not reproduce the drive (--replay-anyway replays it all the same)");
+  }
+  for (const std::string& out : {a.telemetry, a.record})
+    scenario::refuseOverwritingInputs(out, {scenarioFile, spec.vehicleFile, spec.terrainFile, a.replay});
+  InterruptGuard interrupts;
   SessionOptions so;
   so.telemetryPath = a.telemetry;
   so.recordPath = a.record;
@@ -35,7 +60,7 @@ int runDrive(const DriveArgs& a) {
   if (replay && a.batch) {
     // As fast as possible, no window: the same inputs give the same bits.
     for (const RecordedTick& e : replay->entries)
-      if (!session.replay(e)) break;
+      if (interruptRequested() || !session.replay(e)) break;
     std::printf("replayed %ld ticks to t = %.3f s (%d steps of %g s per %g ms tick)\n", replay->inputCount(),
                 session.time(), session.simulation().stepsPerTick(), spec.integrator.step, spec.tick * 1e3);
   } else {
@@ -43,6 +68,7 @@ int runDrive(const DriveArgs& a) {
     io.driver = replay ? DriverSource::Replay : DriverSource::Person;
     io.replay = replay.get();
     io.mappingDir = a.mappings;
+    io.recordDir = a.recordDir;
     io.seconds = a.seconds;
     io.vsync = !a.noVsync;
     io.screenshot = a.screenshot;
@@ -56,6 +82,13 @@ int runDrive(const DriveArgs& a) {
   if (session.resets() > 0)
     std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
                 session.resets() == 1 ? "" : "s", session.notice().c_str(), session.lastDivergence().c_str());
+  session.closeOutputs();
+  if (!a.telemetry.empty()) std::printf("telemetry: %s (%d segment%s)\n", a.telemetry.c_str(), session.segment() + 1,
+                                        session.segment() == 0 ? "" : "s");
+  if (interruptRequested()) {
+    std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
+    return interruptExitStatus();
+  }
   if (session.failed()) {
     std::fprintf(stderr, "error: %s\n", session.failure().c_str());
     return 3;
@@ -68,11 +101,16 @@ int runDrive(const DriveArgs& a) {
 void addDriveCommand(CLI::App& app, CommandList& commands) {
   CLI::App* cmd = app.add_subcommand("drive", "Drive a scenario in a window with a wheel, controller, joystick or keyboard");
   auto a = std::make_shared<DriveArgs>();
-  cmd->add_option("scenario", a->scenario, "Scenario file (default: the ISO course on the flat road)")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("scenario", a->scenario,
+                  "Scenario file (default: the ISO course on the flat road; with --replay, the recording's)")
+      ->check(CLI::ExistingFile)
+      ->each([a](const std::string&) { a->scenarioGiven = true; });
   cmd->add_option("--record", a->record, "Record the inputs of every tick to this file");
   cmd->add_option("--replay", a->replay, "Replay recorded inputs instead of the devices")->check(CLI::ExistingFile);
   cmd->add_flag("--batch", a->batch, "With --replay: no window, as fast as possible");
+  cmd->add_flag("--replay-anyway", a->replayAnyway,
+                "Replay a recording made with another scenario, vehicle or tick (it will not reproduce the drive)");
+  cmd->add_option("--record-dir", a->recordDir, "Folder of the recordings F9 starts (default: " + defaultRecordDir() + ")");
   cmd->add_option("--telemetry", a->telemetry, "Write telemetry CSV while driving");
   cmd->add_option("--seconds", a->seconds, "Stop after this much wall time")->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--size", a->size, "Window size, e.g. 1280x720");

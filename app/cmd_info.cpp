@@ -1,10 +1,14 @@
 // `bdfcar info VEHICLE.toml`: bodies, joints, cut joints and the coordinate,
-// constraint and degree-of-freedom counts of a vehicle file.
+// constraint and degree-of-freedom counts of a vehicle file; `bdfcar info
+// TERRAIN.toml`: what a terrain file builds (both check the file fully).
 #include <cstdio>
+#include <filesystem>
 
 #include "cli_errors.h"
 #include "commands.h"
+#include "config/toml_reader.h"
 #include "multibody/model.h"
+#include "terrain/terrain_file.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_file.h"
@@ -22,7 +26,29 @@ const char* cutTypeName(mb::CutJointType t) {
   return "?";
 }
 
+// The terrain's kind and size.
+int runTerrainInfo(const std::string& path) {
+  const terrain::TerrainData t = terrain::loadTerrain(path);
+  static const char* kKind[] = {"plane", "mesh", "heightfield"};
+  std::printf("%s (%s)\n", t.name.c_str(), path.c_str());
+  std::printf("  kind: %s, friction %.3f\n", kKind[static_cast<int>(t.kind)], t.friction);
+  if (t.kind == terrain::TerrainKind::Mesh) std::printf("  %zu vertices, %zu triangles\n", t.vertices.size(), t.triangles.size());
+  if (t.kind == terrain::TerrainKind::Heightfield) std::printf("  %d x %d heights, %g x %g m cells\n", t.rows, t.cols, t.dx, t.dy);
+  return 0;
+}
+
+// A terrain file has a top-level `kind` or `friction` and no [vehicle];
+// anything else is read (and its errors reported) as a vehicle. A pipe can be
+// read only once: it is always a vehicle.
+bool isTerrainFile(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  const config::Table root = config::parseTomlFile(path);
+  return (root.has("kind") || root.has("friction")) && !root.has("vehicle");
+}
+
 int runInfo(const std::string& path) {
+  if (isTerrainFile(path)) return runTerrainInfo(path);
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path));
   const mb::Model& m = v.model;
   std::printf("%s (%s)\n", v.spec.name.c_str(), path.c_str());
@@ -65,9 +91,12 @@ int runInfo(const std::string& path) {
 }  // namespace
 
 void addInfoCommand(CLI::App& app, CommandList& commands) {
-  CLI::App* cmd = app.add_subcommand("info", "Print the bodies, joints, cut joints and coordinate/constraint/DOF counts of a vehicle file");
+  CLI::App* cmd = app.add_subcommand("info", "Print the bodies, joints, cut joints and coordinate/constraint/DOF counts of a "
+                                              "vehicle file (or check a terrain file and print its size)");
   auto path = std::make_shared<std::string>();
-  cmd->add_option("vehicle", *path, "Vehicle file (assets/vehicles/*.toml)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("file", *path, "Vehicle file (assets/vehicles/*.toml) or terrain file (assets/terrain/*.toml)")
+      ->required()
+      ->check(CLI::ExistingFile);
   commands.push_back({cmd, [path] { return reportErrors([&] { return runInfo(*path); }); }});
 }
 

@@ -5,6 +5,8 @@
 #include <memory>
 
 #include "cli_errors.h"
+#include "interrupt.h"
+#include "scenario/row_file.h"
 #include "commands.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
@@ -17,10 +19,13 @@ namespace {
 int runRun(const std::string& path, const std::string& out, const ScenarioOverrides& ov) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(path);
   applyOverrides(ov, spec);
+  scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
   scenario::Simulation sim(spec);
+  InterruptGuard interrupts;
   scenario::RunOptions opt;
   opt.telemetryPath = out;
   opt.keepSamples = false;
+  opt.stopRequested = &interruptRequested();
   // Without a telemetry file (and no course to judge) nothing is sampled:
   // the printed time per step is then the step alone.
   opt.sample = !out.empty() || sim.course().has_value();
@@ -31,17 +36,24 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
   }
   const auto& c = r.counters;
   const double perStepUs = r.steps > 0 ? 1e6 * r.wallSeconds / r.steps : 0;
+  const scenario::StepCost cost = scenario::stepCost(r.stepSeconds);
   std::printf("%s: %ld steps of %.4g s, %ld Newton iterations, %ld Jacobians, %ld factorizations "
-              "(%ld refreshed, %ld rescued, %ld split), %.2f us per step, real-time factor %.0f\n",
+              "(%ld refreshed, %ld rescued, %ld split), %.2f us per step (p50 %.1f, p99 %.1f, max %.1f), "
+              "real-time factor %.0f\n",
               spec.name.c_str(), r.steps, spec.integrator.step, c.newtonIterations, c.jacobians, c.factorizations,
-              c.refreshes, c.rescues, c.splits, perStepUs,
+              c.refreshes, c.rescues, c.splits, perStepUs, cost.p50, cost.p99, cost.max,
               r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
   if (r.course) {
     const auto& cr = *r.course;
     std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
                 cr.passed ? "passed" : "FAILED", cr.coneHits, cr.coneHits == 1 ? "" : "s", cr.peakLateralAcceleration,
                 cr.peakLateralAcceleration / 9.81, cr.exitTime < 0 ? " (course not completed)" : "");
-    return cr.passed && cr.exitTime >= 0 ? 0 : 4;
+    if (!r.interrupted) return cr.passed && cr.exitTime >= 0 ? 0 : 4;
+  }
+  if (r.interrupted) {
+    std::fprintf(stderr, "%s: stopped by %s at t = %.3f s%s%s\n", spec.name.c_str(), interruptSignalName(),
+                 r.simulatedSeconds, out.empty() ? "" : "; the telemetry is complete to its last row: ", out.c_str());
+    return interruptExitStatus();
   }
   return 0;
 }

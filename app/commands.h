@@ -18,6 +18,8 @@ void addVersionCommand(CLI::App& app, CommandList& commands);
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
 void addReportCommand(CLI::App& app, CommandList& commands);
+void addSoakCommand(CLI::App& app, CommandList& commands);
+void addCheckCommand(CLI::App& app, CommandList& commands);
 // bdfcar (on screen):
 void addDriveCommand(CLI::App& app, CommandList& commands);
 void addDemoCommand(CLI::App& app, CommandList& commands);

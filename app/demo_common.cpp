@@ -29,6 +29,7 @@ std::string demoTelemetryPath(const DemoOptions& o) {
 }
 
 int finishDemo(DriveSession& session, const DemoOptions& o) {
+  session.closeOutputs();  // the plots read the whole telemetry
   const std::string telemetry = demoTelemetryPath(o);
   const std::string why = plotDrive(telemetry, o.outDir, session.simulation().course(), session.spec().name);
   if (!why.empty()) std::fprintf(stderr, "note: %s\n", why.c_str());

@@ -2,6 +2,7 @@
 // coordinates, integrated by an implicit BDF method (Park, Lee, Song, Bae).
 #include <cstdio>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "process.h"
 
@@ -16,15 +17,22 @@ int main(int argc, char** argv) {
   addInfoCommand(app, commands);
   addRunCommand(app, commands);
   addReportCommand(app, commands);
+  addSoakCommand(app, commands);
+  addCheckCommand(app, commands);
 #ifdef BDFCAR_WITH_GRAPHICS
   addDriveCommand(app, commands);
   addDemoCommand(app, commands);
   addRenderDelegateCommand(app, commands);
   addInputCommand(app, commands);
 #endif
-  CLI11_PARSE(app, argc, argv);
+  requireFiniteNumbers(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cliExitCode(app, e);
+  }
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();
   std::fprintf(stderr, "%s\nerror: name a command (see above)\n", app.help().c_str());
-  return 2;
+  return kExitUsage;
 }

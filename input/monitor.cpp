@@ -75,6 +75,13 @@ bool quitRequested() {
 
 // Lists devices, then polls every 10 ms and prints at the chosen interval.
 int runInputMonitor(const MonitorOptions& o) {
+  // Checked here too (not only by the CLI): the tick counts below must fit a long.
+  const auto inRange = [](double x, double lo) { return std::isfinite(x) && x >= lo && x <= kMaxMonitorSeconds; };
+  if (!inRange(o.seconds, 0.0) || !inRange(o.printInterval, kTick)) {
+    std::fprintf(stderr, "bdfcar input: --seconds must be in [0, %g] and --interval in [%g, %g] s\n", kMaxMonitorSeconds,
+                 kTick, kMaxMonitorSeconds);
+    return 1;
+  }
   InputOptions io;
   io.mappingDir = o.mappingDir;
   io.deviceFilter = o.deviceFilter;

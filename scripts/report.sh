@@ -135,6 +135,40 @@ bench_table() {
   fi
   echo '```'
   echo
+} >> "$out"
+
+{
+  echo "## 9. Hard cases in files (\`bdfcar check\`)"
+  echo
+  echo "assets/scenarios/hard/: each scenario states what must hold in its [check] table (no divergence,"
+  echo "finite states, constraint residuals at the three levels, speed and rise bounds, an outcome)."
+  echo "The default Newton policy at 10, 20 and 40 ms (tick = step where the step is longer than 10 ms);"
+  echo "wall time per step p50 / p99 / max in us (one run, this machine) and the steps the policy"
+  echo "refreshed, rescued (full Newton) or split. Command: \`build/app/bdfcar check [--step H --tick H]\`."
+  for h in 0.01 0.02 0.04; do
+    echo
+    echo "**h = $(awk -v h="$h" 'BEGIN { print h * 1000 }') ms**"
+    echo
+    if [ "$h" = 0.01 ]; then args=(); else args=(--step "$h" --tick "$h"); fi
+    "$build/app/bdfcar" check "${args[@]}" 2> /dev/null | grep -E '^\||passed|: ' || true
+  done
+  echo
+} >> "$out"
+
+{
+  echo "## 10. Soak: an hour of driving"
+  echo
+  echo "One simulated hour on the flat road with seeded, bounded random inputs, and one with the steering"
+  echo "flipped full left / full right every tick at up to 80 km/h, replayed as \`drive --replay --batch\`"
+  echo "replays a recording (\`bdfcar soak\` writes the recording; replaying it gives the same telemetry):"
+  echo "divergences, non-finite samples, the largest constraint residual at the three levels (sampled once"
+  echo "a simulated second), resident memory. Command: \`bash scripts/soak.sh\` (or \`build/app/bdfcar soak"
+  echo "--kind random|flipflop --seconds 3600\`)."
+  echo
+  echo '```'
+  BDFCAR_BUILD_DIR="$build" bash "$root/scripts/soak.sh" "$tmp" 2>&1 | grep -E '^(soak|constraint|resident)'
+  echo '```'
+  echo
   echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared VM."
 } >> "$out"
 echo "wrote $out"

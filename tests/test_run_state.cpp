@@ -189,3 +189,65 @@ TEST(Rewind, ADivergenceGoesBackToTheLastGoodSnapshotInsteadOfEndingTheRun) {
   ASSERT_TRUE(plain.failed());
   EXPECT_NE(plain.failureText().find("the run failed at t = "), std::string::npos) << plain.failureText();
 }
+
+TEST(SteeringSystem, FullLeftFullRightEveryTickAt80IsAHardInputNotATear) {
+  // The flip-flop that used to diverge ("non-finite equations of motion"):
+  // the rack follows through the steering system, bounded in speed.
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  spec.initialSpeed = 80 / 3.6;
+  scenario::Simulation sim(spec);
+  scenario::Run run(sim, runOptions(false));
+  ASSERT_FALSE(run.failed()) << run.failure();
+  const double vmax = sim.vehicle().spec.steering.maxRackSpeed;
+  double rack = sim.sample().rack, maxRate = 0;
+  for (int i = 0; i < 500; ++i) {
+    ASSERT_TRUE(run.tick(scenario::DriverInput{i % 2 ? 1.0 : -1.0, 0.0, 0.0})) << run.failureText();
+    const double r = sim.sample().rack;
+    maxRate = std::max(maxRate, std::abs(r - rack) / spec.tick);
+    rack = r;
+  }
+  EXPECT_LE(maxRate, vmax * (1 + 1e-9)) << "m/s";
+  // No throttle: the car can only lose speed, and it is still rolling.
+  EXPECT_LT(run.lastSample().speed, spec.initialSpeed + 0.05);
+  EXPECT_GT(run.lastSample().speed, 5.0);
+}
+
+TEST(SteeringSystem, AStepCommandReachesTheRackWithinTheLimits) {
+  // Analytic: from rest, a full-lock step: the rack accelerates at the
+  // limit, runs at the maximum speed, and settles on the command.
+  const scenario::SteeringLimits l{0.03, 2.0, 60.0};
+  double s = 0, r = 0, peak = 0;
+  const double tick = 0.01;
+  for (int i = 0; i < 200; ++i) {
+    const double a = scenario::steeringAcceleration(l, s, r, 1.0, tick);
+    EXPECT_LE(std::abs(a), l.maxAcceleration * (1 + 1e-12));
+    s += (r + 0.5 * a * tick) * tick;
+    r += a * tick;
+    EXPECT_LE(std::abs(r), l.maxRate * (1 + 1e-12));
+    peak = std::max(peak, s);
+    if (i == 2) {
+      EXPECT_NEAR(r, 3 * tick * l.maxAcceleration, 1e-12) << "acceleration-limited start";
+    }
+  }
+  EXPECT_NEAR(s, 1.0, 1e-6) << "settles on the command";
+  EXPECT_LT(peak, 1.02) << "without a large overshoot";
+  // Full travel at 2 /s takes at least 0.5 s: not reached before.
+  double s2 = 0, r2 = 0;
+  for (int i = 0; i < 45; ++i) {
+    const double a = scenario::steeringAcceleration(l, s2, r2, 1.0, tick);
+    s2 += (r2 + 0.5 * a * tick) * tick;
+    r2 += a * tick;
+  }
+  EXPECT_LT(s2, 0.9);
+}
+
+TEST(SteeringSystem, AScriptedSteeringThatDoesNotStartAtZeroIsRampedInDuringSettling) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/jturn.toml"));
+  spec.steering.kind = scenario::SignalSpec::Kind::Constant;
+  spec.steering.level = 0.5;
+  scenario::Simulation sim(spec);
+  const scenario::RunResult r = scenario::runScenario(sim, runOptions(false));
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_NEAR(sim.steerAt(0.0), 0.5, 1e-12);
+  EXPECT_NEAR(sim.steerAt(-spec.settleTime + 1e-9), 0.0, 1e-6) << "from the design position";
+}

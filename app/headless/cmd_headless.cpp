@@ -5,6 +5,8 @@
 #include <memory>
 
 #include "cli_errors.h"
+#include "interrupt.h"
+#include "scenario/row_file.h"
 #include "commands.h"
 #include "demo_common.h"
 #include "headless/frames.h"
@@ -39,11 +41,18 @@ int runRender(const RenderArgs& a) {
   fo.fps = a.fps;
   fo.camera = a.camera;
   if (!parseSize(a.size, fo.width, fo.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT, e.g. 1280x720");
+  scenario::refuseOverwritingInputs(a.telemetry, {a.scenario, spec.vehicleFile, spec.terrainFile});
+  InterruptGuard interrupts;
   SessionOptions so;
   so.telemetryPath = a.telemetry;
   DriveSession session(spec, so);
   const FramesResult r = renderFrames(session, fo);
+  session.closeOutputs();
   printFrameStats(r);
+  if (interruptRequested()) {
+    std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
+    return interruptExitStatus();
+  }
   if (session.failed()) {
     std::fprintf(stderr, "error: %s\n", session.failure().c_str());
     return 3;
@@ -55,6 +64,7 @@ int runHeadlessDemo(const DemoOptions& o) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(o.scenario);
   SessionOptions so;
   so.telemetryPath = demoTelemetryPath(o);
+  InterruptGuard interrupts;
   DriveSession session(spec, so);
   FramesOptions fo;
   fo.outDir = (std::filesystem::path(o.outDir) / "frames").string();
@@ -66,7 +76,12 @@ int runHeadlessDemo(const DemoOptions& o) {
   else
     std::fprintf(stderr, "note: ffmpeg is not installed: frames only, no video\n");
   const FramesResult r = renderFrames(session, fo);
+  session.closeOutputs();
   printFrameStats(r);
+  if (interruptRequested()) {
+    std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
+    return interruptExitStatus();
+  }
   std::printf("frames: %s/frame_*.png\n", fo.outDir.c_str());
   if (!fo.video.empty()) std::printf("video: %s\n", fo.video.c_str());
   return finishDemo(session, o);

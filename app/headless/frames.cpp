@@ -9,6 +9,7 @@
 #include "render/headless.h"
 #include "render/png_queue.h"
 #include "render/video_pipe.h"
+#include "interrupt.h"
 #include "view/scene_setup.h"
 
 namespace bdfcar::app {
@@ -65,7 +66,7 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
       ++r.frames;
       nextFrame += frameDt;
     }
-    if (session.finished() || session.failed()) break;
+    if (session.finished() || session.failed() || interruptRequested()) break;
     const auto t0 = Clock::now();
     session.tick(std::nullopt);
     lastStep = seconds(Clock::now() - t0);

@@ -3,6 +3,7 @@
 // gl* calls of OpenSceneGraph reach OSMesa, not glvnd.
 #include <cstdio>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "process.h"
 
@@ -14,7 +15,12 @@ int main(int argc, char** argv) {
   CommandList commands;
   addVersionCommand(app, commands);
   addHeadlessCommands(app, commands);
-  CLI11_PARSE(app, argc, argv);
+  requireFiniteNumbers(app);  // the same checks and exit codes as bdfcar (app/cli_errors.h)
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cliExitCode(app, e);
+  }
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();
   std::fprintf(stderr, "%s\nerror: name a command (see above)\n", app.help().c_str());

@@ -7,6 +7,7 @@
 #include "interactive/draw_thread.h"
 #include "interactive/tick_clock.h"
 #include "interactive/tick_handler.h"
+#include "interrupt.h"
 #include "render/window.h"
 #include "view/scene_setup.h"
 
@@ -38,7 +39,7 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
     const double sim0 = session.time();
     const TickOutcome out = handler.handle(window.takeEvents());
     drawing.command(out.view);
-    if (out.quit) break;
+    if (out.quit || interruptRequested()) break;
     if (opt.seconds > 0 && clock.sinceStart() >= opt.seconds) break;
     const double physics = std::chrono::duration<double>(TickClock::Clock::now() - clock.tickStart()).count();
     if (opt.quitAtEnd && session.finished()) break;

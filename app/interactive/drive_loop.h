@@ -18,6 +18,7 @@ struct InteractiveOptions {
   DriverSource driver = DriverSource::Person;
   const Recording* replay = nullptr;   // with DriverSource::Replay
   std::string mappingDir;              // input mapping files (empty: the shipped ones)
+  std::string recordDir = "recordings";  // where F9 puts its numbered recordings
   double seconds = 0;                  // stop after this much wall time (0 = until quit or the end)
   int width = 1280, height = 720;
   bool vsync = true;

@@ -10,11 +10,12 @@ namespace bdfcar::app {
 
 namespace {
 
-// recording-1.txt, recording-2.txt, ... in the working folder, the first free name.
-std::string nextRecordingName() {
+// recording-1.txt, recording-2.txt, ... in the recordings folder, the first free name.
+std::string nextRecordingName(const std::string& dir) {
+  std::filesystem::create_directories(dir);
   for (int i = 1;; ++i) {
-    const std::string name = "recording-" + std::to_string(i) + ".txt";
-    if (!std::filesystem::exists(name)) return name;
+    const std::filesystem::path name = std::filesystem::path(dir) / ("recording-" + std::to_string(i) + ".txt");
+    if (!std::filesystem::exists(name)) return name.string();
   }
 }
 
@@ -61,16 +62,15 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
     out.view.cameraSwitches = c.camera ? 1 : 0;
     out.view.bodySwitches = c.view ? 1 : 0;
     if (c.record) {
-      // A recording replays only from the scenario's start: restart into a new file.
-      session_.startRecording(nextRecordingName());
-      say("recording to " + session_.recordingPath());
+      toggleRecording();
     } else if (c.reset) {
       session_.restart();
-      say("back to the start");
+      say("back to the start (telemetry segment " + std::to_string(session_.segment()) + ")");
     } else if (c.rewind) {
       if (session_.rewind()) {
-        char text[64];
-        std::snprintf(text, sizeof text, "rewound to t = %.1f s", session_.time());
+        char text[96];
+        std::snprintf(text, sizeof text, "rewound to t = %.1f s (telemetry segment %d)", session_.time(),
+                      session_.segment());
         say(text);
       } else {
         say("nothing to rewind");
@@ -103,6 +103,26 @@ void TickHandler::advance() {
     if (e.kind == RecordedTick::Kind::Input) return;
   }
   if (message_ != "replay finished") say("replay finished");
+}
+
+// F9: start recording (the scenario restarts: a recording replays from the
+// start) into a new numbered file, or stop and keep it.
+void TickHandler::toggleRecording() {
+  try {
+    if (session_.recording()) {
+      const std::string path = session_.recordingPath();
+      const long ticks = session_.stopRecording();
+      say("recording saved: " + path + " (" + std::to_string(ticks) + " ticks)");
+      std::printf("recording saved: %s (%ld ticks)\n", path.c_str(), ticks);
+    } else {
+      session_.startRecording(nextRecordingName(options_.recordDir));
+      say("recording to " + session_.recordingPath() + " from the start; F9 stops");
+      std::printf("recording to %s\n", session_.recordingPath().c_str());
+    }
+  } catch (const std::exception& e) {
+    say(e.what());
+    std::fprintf(stderr, "error: %s\n", e.what());
+  }
 }
 
 void TickHandler::setSteeringFeel() {

@@ -33,6 +33,7 @@ class TickHandler {
  private:
   void say(const std::string& text);
   void advance();
+  void toggleRecording();
 
   DriveSession& session_;
   const InteractiveOptions& options_;

@@ -1,6 +1,7 @@
 #include "report/studies.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <cmath>
 #include <fstream>
@@ -81,23 +82,31 @@ scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::Integr
   return s;
 }
 
+// One column of a CSV with a header line; a cell that is not a finite number
+// is an error naming the file, the line and the column (never "stod").
 std::vector<double> csvColumn(const std::string& path, const std::string& name) {
   std::ifstream f(path);
-  if (!f) throw std::runtime_error(path + ": cannot open");
+  if (!f) throw std::runtime_error(path + ": cannot open the reference CSV");
   std::string line;
   std::getline(f, line);
   std::stringstream h(line);
   int index = -1, i = 0;
   for (std::string c; std::getline(h, c, ','); ++i)
     if (c == name) index = i;
-  if (index < 0) throw std::runtime_error(path + ": no column " + name);
+  if (index < 0) throw std::runtime_error(path + ":1: no column '" + name + "' in the header line");
   std::vector<double> out;
-  while (std::getline(f, line)) {
+  for (int lineNumber = 2; std::getline(f, line); ++lineNumber) {
     std::stringstream r(line);
     std::string cell;
     for (int k = 0; k <= index; ++k) std::getline(r, cell, ',');
-    out.push_back(std::stod(cell));
+    double x = 0;
+    const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
+    if (ec != std::errc() || end != cell.data() + cell.size() || !std::isfinite(x))
+      throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": column '" + name +
+                               "': expected a finite number, got '" + cell + "'");
+    out.push_back(x);
   }
+  if (out.empty()) throw std::runtime_error(path + ": no data lines below the header");
   return out;
 }
 

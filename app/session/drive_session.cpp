@@ -10,12 +10,12 @@ DriveSession::DriveSession(const scenario::ScenarioSpec& spec, const SessionOpti
   scenario::RunOptions ro;
   ro.telemetryPath = options_.telemetryPath;
   ro.keepSamples = false;
+  ro.keepStepCost = false;  // a drive may last hours: memory stays flat
   ro.rewindable = options_.rewindable;
   ro.restartable = true;
   run_ = std::make_unique<scenario::Run>(*sim_, ro);
   if (run_->failed()) throw std::runtime_error(spec.vehicleFile + ": " + run_->failure());
-  if (!options_.recordPath.empty())
-    recorder_ = std::make_unique<InputRecorder>(options_.recordPath, spec.sourceFile, spec.tick);
+  if (!options_.recordPath.empty()) recorder_ = std::make_unique<InputRecorder>(options_.recordPath, spec);
   sample_ = run_->lastSample();
 }
 
@@ -35,11 +35,25 @@ bool DriveSession::rewind() {
 }
 
 void DriveSession::startRecording(const std::string& path) {
-  recorder_.reset();
+  if (recorder_) stopRecording();
+  auto recorder = std::make_unique<InputRecorder>(path, spec());  // throws before anything changes
   run_->restart();
   options_.recordPath = path;
-  recorder_ = std::make_unique<InputRecorder>(path, spec().sourceFile, spec().tick);
+  recorder_ = std::move(recorder);
   sample_ = sim_->sample();
+}
+
+long DriveSession::stopRecording() {
+  if (!recorder_) return 0;
+  const long ticks = recorder_->ticks();
+  std::unique_ptr<InputRecorder> r = std::move(recorder_);
+  r->close();
+  return ticks;
+}
+
+void DriveSession::closeOutputs() {
+  stopRecording();
+  run_->closeOutputs();
 }
 
 bool DriveSession::tick(const std::optional<scenario::DriverInput>& input) {

@@ -38,9 +38,19 @@ class DriveSession {
   void restart();
   // One snapshot (0.5 s) back; recorded. False when there is nothing to go back to.
   bool rewind();
-  // Restarts the scenario recording every tick's input to `path` (a new file).
+  // Restarts the scenario recording every tick's input to `path` (a new file:
+  // a recording replays from the scenario's start).
   void startRecording(const std::string& path);
+  // Closes the recording (throws scenario::OutputError when it cannot be
+  // written); returns the ticks it holds.
+  long stopRecording();
+  bool recording() const { return recorder_ != nullptr; }
   const std::string& recordingPath() const { return options_.recordPath; }
+  // Writes out and closes the telemetry and the recording; throws
+  // scenario::OutputError on a write error (a full disk).
+  void closeOutputs();
+  // The telemetry segment (a column): +1 at each restart, rewind and divergence reset.
+  int segment() const { return run_->segment(); }
   // One driver tick: the given input (a person's, or a replay's) or, with
   // nullopt, the scenario's own driver. Returns false once the run failed
   // (a non-rewindable run diverged): failure() says why.

@@ -1,33 +1,58 @@
 #include "session/input_recording.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 namespace bdfcar::app {
 
-InputRecorder::InputRecorder(const std::string& path, const std::string& scenarioFile, double tick) {
-  f_ = std::fopen(path.c_str(), "w");
-  if (!f_) throw std::runtime_error(path + ": cannot open the input recording for writing");
-  std::fprintf(f_, "# bdfcar input recording: one line per %g ms driver tick: tick steer throttle brake (hex floats);\n",
-               tick * 1e3);
-  std::fprintf(f_, "# 'reset' and 'rewind' lines are the driver's restart and rewind between ticks\n");
-  std::fprintf(f_, "scenario %s\n", scenarioFile.c_str());
+std::string fileContentHash(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return "";
+  std::uint64_t h = 1469598103934665603ull;
+  char c;
+  while (f.get(c)) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
 }
 
-InputRecorder::~InputRecorder() {
-  if (f_) std::fclose(f_);
+namespace {
+std::string absolute(const std::string& p) {
+  std::error_code ec;
+  const auto a = std::filesystem::absolute(p, ec);
+  return ec ? p : a.lexically_normal().string();
+}
+}  // namespace
+
+InputRecorder::InputRecorder(const std::string& path, const scenario::ScenarioSpec& spec) : file_(path) {
+  char tick[64];
+  std::snprintf(tick, sizeof tick, "tick %a\n", spec.tick);
+  file_.append("# bdfcar input recording: one line per driver tick: tick steer throttle brake (hex floats);\n"
+               "# 'reset' and 'rewind' lines are the driver's restart and rewind between ticks\n"
+               "scenario " + absolute(spec.sourceFile) + "\n" +
+               "scenario_hash " + fileContentHash(spec.sourceFile) + "\n" +
+               "vehicle " + absolute(spec.vehicleFile) + "\n" +
+               "vehicle_hash " + fileContentHash(spec.vehicleFile) + "\n" + tick);
+  file_.flush();
 }
 
 void InputRecorder::record(const RecordedTick& e) {
+  char line[160];
+  int n = 0;
   switch (e.kind) {
     case RecordedTick::Kind::Input:
-      std::fprintf(f_, "%ld %a %a %a\n", inputs_++, e.input.steer, e.input.throttle, e.input.brake);
+      n = std::snprintf(line, sizeof line, "%ld %a %a %a\n", inputs_++, e.input.steer, e.input.throttle,
+                        e.input.brake);
       break;
-    case RecordedTick::Kind::Reset: std::fprintf(f_, "reset\n"); break;
-    case RecordedTick::Kind::Rewind: std::fprintf(f_, "rewind\n"); break;
+    case RecordedTick::Kind::Reset: n = std::snprintf(line, sizeof line, "reset\n"); break;
+    case RecordedTick::Kind::Rewind: n = std::snprintf(line, sizeof line, "rewind\n"); break;
   }
+  file_.append(line, static_cast<std::size_t>(n));
 }
 
 long Recording::inputCount() const {
@@ -39,39 +64,74 @@ Recording readRecording(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ":0: cannot open the input recording");
   Recording r;
+  r.path = path;
   std::string line;
   int lineNo = 0;
   long inputs = 0;
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": " + what);
+  };
   while (std::getline(in, line)) {
     ++lineNo;
     if (line.empty() || line[0] == '#') continue;
-    if (line.rfind("scenario ", 0) == 0) {
-      r.scenarioFile = line.substr(9);
-      continue;
-    }
-    if (line == "reset" || line == "rewind") {
-      r.entries.push_back({line == "reset" ? RecordedTick::Kind::Reset : RecordedTick::Kind::Rewind, {}});
-      continue;
-    }
     std::istringstream s(line);
+    std::string word;
+    s >> word;
+    if (word == "scenario" || word == "vehicle" || word == "scenario_hash" || word == "vehicle_hash") {
+      std::string value = line.substr(word.size());
+      value.erase(0, value.find_first_not_of(' '));
+      (word == "scenario" ? r.scenarioFile : word == "vehicle" ? r.vehicleFile
+                                           : word == "scenario_hash" ? r.scenarioHash
+                                                                      : r.vehicleHash) = value;
+      continue;
+    }
+    if (word == "tick") {
+      std::string v;
+      s >> v;
+      try {
+        r.tick = std::stod(v);
+      } catch (const std::exception&) {
+        fail("expected 'tick SECONDS'");
+      }
+      if (!(r.tick >= 1e-3 && r.tick <= 0.1)) fail("expected a tick in [1, 100] ms");
+      continue;
+    }
+    if (word == "reset" || word == "rewind") {
+      r.entries.push_back({word == "reset" ? RecordedTick::Kind::Reset : RecordedTick::Kind::Rewind, {}});
+      continue;
+    }
+    std::istringstream t(line);
     long tick;
     std::string a, b, c;
-    if (!(s >> tick >> a >> b >> c) || tick != inputs)
-      throw std::runtime_error(path + ":" + std::to_string(lineNo) +
-                               ": expected 'tick steer throttle brake' with consecutive ticks from 0, or an event "
-                               "(reset, rewind)");
+    if (!(t >> tick >> a >> b >> c) || tick != inputs)
+      fail("expected 'tick steer throttle brake' with consecutive ticks from 0, or an event (reset, rewind)");
     scenario::DriverInput d;
     try {
       d.steer = std::stod(a);
       d.throttle = std::stod(b);
       d.brake = std::stod(c);
     } catch (const std::exception&) {
-      throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": expected three numbers");
+      fail("expected three numbers");
     }
+    if (!std::isfinite(d.steer) || !std::isfinite(d.throttle) || !std::isfinite(d.brake))
+      fail("expected finite numbers");
     r.entries.push_back({RecordedTick::Kind::Input, d});
     ++inputs;
   }
   return r;
+}
+
+std::string replayMismatch(const Recording& rec, const scenario::ScenarioSpec& spec) {
+  if (!rec.scenarioHash.empty() && rec.scenarioHash != fileContentHash(spec.sourceFile))
+    return "it was recorded with the scenario " + rec.scenarioFile + " (content " + rec.scenarioHash +
+           "), this run's scenario " + spec.sourceFile + " differs";
+  if (!rec.vehicleHash.empty() && rec.vehicleHash != fileContentHash(spec.vehicleFile))
+    return "it was recorded with the vehicle " + rec.vehicleFile + " (content " + rec.vehicleHash +
+           "), this run's vehicle " + spec.vehicleFile + " differs";
+  if (rec.tick > 0 && std::abs(rec.tick - spec.tick) > 1e-12)
+    return "it was recorded at a " + std::to_string(rec.tick * 1e3) + " ms tick, this run's tick is " +
+           std::to_string(spec.tick * 1e3) + " ms";
+  return "";
 }
 
 }  // namespace bdfcar::app

@@ -3,13 +3,18 @@
 // very same bits and reproduces the run (and its telemetry) bit for bit.
 // What the driver did besides steering is recorded as events on lines of
 // their own: `reset` (back to the start) and `rewind` (one snapshot back).
+// The header names the scenario and vehicle files with a hash of their
+// content and the tick, so that a replay against other data is refused
+// rather than silently different. Lines go out whole (scenario/row_file.h).
 #pragma once
 
-#include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "scenario/driver_input.h"
+#include "scenario/row_file.h"
+#include "scenario/scenario_spec.h"
 
 namespace bdfcar::app {
 
@@ -19,28 +24,36 @@ struct RecordedTick {
   scenario::DriverInput input;  // Kind::Input
 };
 
+// FNV-1a (64 bits) of a file's content, as 16 hex digits ("" if unreadable).
+std::string fileContentHash(const std::string& path);
+
 class InputRecorder {
  public:
-  // Opens the file (throws std::runtime_error naming it) and writes a header
-  // naming the scenario the inputs belong to and the tick they were taken at.
-  InputRecorder(const std::string& path, const std::string& scenarioFile, double tick);
-  ~InputRecorder();
-  InputRecorder(const InputRecorder&) = delete;
-  InputRecorder& operator=(const InputRecorder&) = delete;
+  // Creates the file (throws scenario::OutputError naming it) and writes the header.
+  InputRecorder(const std::string& path, const scenario::ScenarioSpec& spec);
   void record(const RecordedTick& entry);
+  void close() { file_.close(); }
+  const std::string& path() const { return file_.path(); }
+  long ticks() const { return inputs_; }
 
  private:
-  std::FILE* f_ = nullptr;
+  scenario::RowFile file_;
   long inputs_ = 0;
 };
 
 struct Recording {
-  std::string scenarioFile;
-  std::vector<RecordedTick> entries;  // in order: inputs numbered from 0, events between them
+  std::string path;
+  std::string scenarioFile, scenarioHash, vehicleFile, vehicleHash;  // empty in old recordings
+  double tick = 0;                     // 0 in old recordings (10 ms)
+  std::vector<RecordedTick> entries;   // in order: inputs numbered from 0, events between them
   long inputCount() const;
 };
 
 // Reads a recording; throws std::runtime_error with file:line on a bad line.
 Recording readRecording(const std::string& path);
+
+// Why `rec` would not replay the drive it recorded with `spec` ("" when it
+// would): another scenario or vehicle file content, or another tick.
+std::string replayMismatch(const Recording& rec, const scenario::ScenarioSpec& spec);
 
 }  // namespace bdfcar::app

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <toml.hpp>
@@ -167,8 +168,40 @@ double Table::number(const std::string& key, Dimension d) {
   double x;
   std::string why;
   if (!toQuantity(V(v), d, x, why)) fail("expected " + exp + ", " + why, key);
-  if (!std::isfinite(x)) fail("expected a finite value", key);
+  if (!std::isfinite(x)) failValue(v, key, "a finite " + (d == Dimension::None ? std::string("number") : dimensionName(d)));
   return x;
+}
+
+double Table::number(const std::string& key, Dimension d, const Range& range) {
+  const double x = number(key, d);
+  if (!range.contains(x)) {
+    const std::string unit = siUnit(d);
+    const std::string name = dimensionName(d);
+    const bool vowel = !name.empty() && std::string_view("aeiou").find(name.front()) != std::string_view::npos;
+    const std::string what = d == Dimension::None ? "a number " : (vowel ? "an " : "a ") + name + " ";
+    failValue(find(key), key, what + range.text() + (unit.empty() ? "" : " " + unit));
+  }
+  return x;
+}
+
+double Table::number(const std::string& key, Dimension d, const Range& range, double fallback) {
+  return has(key) ? number(key, d, range) : fallback;
+}
+
+std::vector<double> Table::numbers(const std::string& key, Dimension d, const Range& range) {
+  std::vector<double> out = numbers(key, d);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!range.contains(out[i])) {
+      const std::string unit = siUnit(d);
+      reject(key, "every element " + range.text() + (unit.empty() ? "" : " " + unit), static_cast<int>(i));
+    }
+  return out;
+}
+
+Eigen::Vector3d Table::vector3(const std::string& key, Dimension d, const Range& range) {
+  const std::vector<double> x = numbers(key, d, range);
+  if (x.size() != 3) fail("expected 3 components [x, y, z], got " + std::to_string(x.size()), key);
+  return Eigen::Vector3d(x[0], x[1], x[2]);
 }
 
 double Table::number(const std::string& key, Dimension d, double fallback) {
@@ -210,6 +243,8 @@ std::vector<double> Table::numbers(const std::string& key, Dimension d) {
     double x;
     std::string why;
     if (!toQuantity(e, d, x, why)) failAt(&e, "key '" + dotted(key) + "': expected " + exp + ", element " + why);
+    // NaN and inf are never a measurement: refuse them where they are written.
+    if (!std::isfinite(x)) failValue(&e, key, "finite numbers");
     out.push_back(x);
   }
   return out;
@@ -373,11 +408,107 @@ void Table::rejectUnknownKeys(const std::vector<std::string_view>& known) const 
 
 namespace {
 
+// Config files are small; anything larger is the wrong file.
+constexpr std::size_t kMaxFileBytes = 16u << 20;
+// Arrays and inline tables nested deeper than this are refused before toml11
+// sees them: its recursive descent parser would overflow the stack.
+constexpr int kMaxNesting = 64;
+
+// The whole content of `path`, read as a stream so that pipes (/dev/stdin,
+// <(...)) work too: seeking to the end to learn the size (what toml11 does)
+// fails on a pipe and, on a directory, asks for a 2^63-byte buffer.
+std::string readWholeFile(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw ConfigError(path + ":0: cannot open the file (" + (ec ? ec.message() : "no such file") + ")");
+  if (std::filesystem::is_directory(status)) throw ConfigError(path + ":0: is a directory, expected a TOML file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path + ":0: cannot open the file");
+  std::string text;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxFileBytes)
+      throw ConfigError(path + ":0: file larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB, expected a TOML config file");
+  }
+  if (in.bad()) throw ConfigError(path + ":0: cannot read the file");
+  return text;
+}
+
+// A cursor over TOML text that counts lines, for the nesting scan.
+struct Scan {
+  const std::string& text;
+  std::size_t i = 0;
+  int line = 1;
+
+  bool done() const { return i >= text.size(); }
+  bool at(std::string_view s) const { return text.compare(i, s.size(), s) == 0; }
+  void advance() {
+    if (text[i] == '\n') ++line;
+    ++i;
+  }
+  // Past a string opened by `quote` (", ', """ or '''); backslash escapes in
+  // basic strings; a single-line string also ends at the end of its line.
+  void skipString(std::string_view quote) {
+    const bool multiLine = quote.size() == 3, basic = quote[0] == '"';
+    i += quote.size();
+    while (!done() && !at(quote) && (multiLine || text[i] != '\n')) {
+      if (basic && text[i] == '\\' && i + 1 < text.size()) advance();
+      advance();
+    }
+    if (at(quote)) i += quote.size();
+  }
+};
+
+// Refuses arrays / inline tables nested deeper than kMaxNesting, at the line
+// where the limit is passed. Brackets inside strings and comments do not count.
+void checkNesting(const std::string& text, const std::string& path) {
+  Scan s{text};
+  int depth = 0;
+  while (!s.done()) {
+    const char c = text[s.i];
+    if (c == '#') {
+      while (!s.done() && text[s.i] != '\n') s.advance();
+    } else if (s.at("\"\"\"") || s.at("'''")) {
+      s.skipString(s.at("\"\"\"") ? "\"\"\"" : "'''");
+    } else if (c == '"' || c == '\'') {
+      s.skipString(c == '"' ? "\"" : "'");
+    } else {
+      if ((c == '[' || c == '{') && ++depth > kMaxNesting)
+        throw ConfigError(path + ":" + std::to_string(s.line) + ": arrays or inline tables nested deeper than " +
+                          std::to_string(kMaxNesting) + " levels");
+      if ((c == ']' || c == '}') && depth > 0) --depth;
+      s.advance();
+    }
+  }
+}
+
+// TOML is UTF-8; toml11 reads past the end of its buffer on some invalid
+// sequences inside strings (found by fuzzing: tests/data/bad/fuzz/), so
+// text that is not UTF-8 is refused here, at the line of the first bad byte.
+void checkUtf8(const std::string& text, const std::string& path) {
+  int line = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') ++line;
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    bool ok = n > 0 && i + n <= text.size() && !(n == 2 && c < 0xc2);
+    for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (!ok) throw ConfigError(path + ":" + std::to_string(line) + ": not UTF-8 text (byte " + std::to_string(c) +
+                               " at offset " + std::to_string(i) + "): a TOML file must be UTF-8");
+    i += n;
+  }
+}
+
 // The whole document, or a ConfigError naming the line where the syntax breaks.
-Table parseStream(std::istream& in, const std::string& path) {
+Table parseText(const std::string& text, const std::string& path) {
+  checkUtf8(text, path);
+  checkNesting(text, path);
   auto doc = std::make_shared<TomlDocument>();
   doc->path = path;
   try {
+    std::istringstream in(text);
     doc->root = toml::parse(in, path);
   } catch (const toml::exception& e) {
     const auto& loc = e.location();
@@ -387,21 +518,16 @@ Table parseStream(std::istream& in, const std::string& path) {
     const auto nl = msg.find('\n');
     if (nl != std::string::npos) msg = msg.substr(0, nl);
     throw ConfigError(path + ":" + std::to_string(loc.line()) + ": TOML syntax error: " + msg);
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc, std::out_of_range from inside the parser
+    throw ConfigError(path + ":0: TOML file could not be parsed (" + std::string(e.what()) + ")");
   }
   return Table(doc, &doc->root, "");
 }
 
 }  // namespace
 
-Table parseTomlFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ":0: cannot open the file");
-  return parseStream(in, path);
-}
+Table parseTomlFile(const std::string& path) { return parseText(readWholeFile(path), path); }
 
-Table parseTomlText(const std::string& text, const std::string& fileName) {
-  std::istringstream in(text);
-  return parseStream(in, fileName);
-}
+Table parseTomlText(const std::string& text, const std::string& fileName) { return parseText(text, fileName); }
 
 }  // namespace bdfcar::config

@@ -55,6 +55,14 @@ class Table {
   std::optional<Table> optionalTable(const std::string& key);
   std::vector<Table> optionalTables(const std::string& key);
 
+  // Quantities (numbers or strings with a unit) in a physical range; errors
+  // read "key 'bodies[0].mass': expected a mass in (0, 1e+06) kg, got -3".
+  // Every number reader refuses NaN and inf.
+  double number(const std::string& key, Dimension d, const Range& range);
+  double number(const std::string& key, Dimension d, const Range& range, double fallback);
+  std::vector<double> numbers(const std::string& key, Dimension d, const Range& range);
+  Eigen::Vector3d vector3(const std::string& key, Dimension d, const Range& range);
+
   // Checked plain values (TOML numbers and strings, no unit strings); errors
   // show what was found: "key 'friction': expected a number in (0, 2], got 5".
   // A finite number in `range`.
@@ -114,8 +122,9 @@ class Table {
   std::shared_ptr<std::set<std::string>> used_;
 };
 
-// Parses a file; throws ConfigError (with the line) on syntax errors or when
-// the file cannot be read.
+// Parses a file (read whole, so pipes work too); throws ConfigError (with the
+// line) on syntax errors, nesting deeper than 64 arrays / inline tables, or
+// when the file cannot be read (missing, a directory, over 16 MiB).
 Table parseTomlFile(const std::string& path);
 // Parses TOML text read elsewhere; `fileName` is what messages call it.
 Table parseTomlText(const std::string& text, const std::string& fileName);

@@ -1,5 +1,6 @@
 #include "scenario/run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +10,9 @@ namespace bdfcar::scenario {
 Run::Run(Simulation& sim, const RunOptions& config) : sim_(sim), config_(config) {
   try {
     equilibrium_ = sim_.prepare();
-  } catch (const std::exception& e) {  // cannot assemble, settle or start: the run failed before it began
+  } catch (const PrepareError&) {
+    throw;  // bad vehicle data: the caller's error, not a failed run
+  } catch (const std::exception& e) {  // diverged while settling or starting: the run failed before it began
     failure_ = e.what();
     failureTime_ = sim_.time();
     return;
@@ -35,10 +38,14 @@ Run::Run(Simulation& sim, const RunOptions& config) : sim_(sim), config_(config)
 
 Run::~Run() = default;
 
+TelemetryInputs Run::rowInputs() const {
+  const DriverInput in = sim_.lastInput();
+  return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_};
+}
+
 void Run::record() {
   if (!config_.sample) return;
-  const DriverInput in = sim_.lastInput();
-  const TelemetryInputs ti{sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_};
+  const TelemetryInputs ti = rowInputs();
   if (telemetry_) telemetry_->write(sample_, ti);
   if (config_.keepSamples) {
     samples_.push_back(sample_);
@@ -59,7 +66,10 @@ bool Run::tick(const std::optional<DriverInput>& input) {
   sim_.beginTick(input);
   ++ticks_;
   for (int i = 0; i < sim_.stepsPerTick() && !finished(); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
     const integ::StepReport rep = sim_.step();
+    if (config_.keepStepCost)
+      stepSeconds_.push_back(std::chrono::duration<float>(std::chrono::steady_clock::now() - t0).count());
     ++steps_;
     if (!rep.ok()) {
       if (config_.rewindable) {
@@ -101,6 +111,12 @@ void Run::restoreSnapshot(const Snapshot& s) {
   failure_.clear();
 }
 
+// The first row of a new segment: the state the run went back to.
+void Run::startSegment() {
+  ++segment_;
+  if (telemetry_ && config_.sample) telemetry_->write(sample_, rowInputs());
+}
+
 // A divergence in a rewindable run: back to the last good snapshot. A
 // snapshot the run has diverged from again before taking a newer one is
 // dropped (it leads to the same failure), down to the initial state.
@@ -111,6 +127,7 @@ void Run::absorbDivergence(const integ::StepReport& rep) {
   restoreSnapshot(back);
   snapshotSinceReset_ = false;
   ++resets_;
+  startSegment();
   auto shown = [](double t) { return std::abs(t) < 5e-3 ? 0.0 : t; };  // no "-0.00"
   char text[128];
   std::snprintf(text, sizeof text, "diverged at t = %.2f s (%s), back to t = %.2f s", shown(at),
@@ -125,6 +142,11 @@ void Run::restart() {
   snapshots_.clear();
   snapshotSinceReset_ = true;
   notice_.clear();
+  startSegment();
+}
+
+void Run::closeOutputs() {
+  if (telemetry_) telemetry_->close();
 }
 
 bool Run::rewind() {
@@ -139,12 +161,20 @@ bool Run::rewind() {
     restoreSnapshot(snapshots_.back());
   }
   snapshotSinceReset_ = true;
+  startSegment();
   return true;
 }
 
 std::optional<CourseResult> Run::course() const {
   if (!judge_) return std::nullopt;
   return judge_->result();
+}
+
+StepCost stepCost(std::vector<float> s) {
+  if (s.empty()) return {};
+  std::sort(s.begin(), s.end());
+  auto at = [&](double q) { return 1e6 * s[std::min(s.size() - 1, static_cast<size_t>(q * (s.size() - 1) + 0.5))]; };
+  return {at(0.5), at(0.99), 1e6 * s.back()};
 }
 
 RunResult runScenario(Simulation& sim, const RunOptions& options) {
@@ -154,7 +184,12 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   r.equilibrium = run->equilibrium();
   const auto wall0 = std::chrono::steady_clock::now();
   while (!run->finished() && run->tick(std::nullopt)) {
+    if (options.stopRequested && options.stopRequested->load()) {
+      r.interrupted = true;
+      break;
+    }
   }
+  run->closeOutputs();
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   r.ok = !run->failed();
   r.failure = run->failure();
@@ -165,6 +200,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   r.counters = sim.integrator().counters();
   r.timers = sim.integrator().timers();
   r.samples = std::move(run->samples());
+  r.stepSeconds = std::move(run->stepSeconds());
   r.steerInputs = std::move(run->steerInputs());
   return r;
 }

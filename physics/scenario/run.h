@@ -8,6 +8,7 @@
 // input recording are the callers' (app/session, app/interactive).
 #pragma once
 
+#include <atomic>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -25,6 +26,7 @@ struct RunOptions {
   std::string telemetryPath;        // empty: no file
   bool sample = true;               // false: no samples at all (timing the steps alone)
   bool keepSamples = true;          // keep every sample in memory (RunResult::samples)
+  bool keepStepCost = true;         // keep every step's wall time (RunResult::stepSeconds)
   // Called after each recorded sample (e.g. a course judge).
   std::function<void(const vehicle::VehicleSample&)> onSample;
   // Rewind: keep the initial state and a snapshot every snapshotInterval of
@@ -32,6 +34,8 @@ struct RunOptions {
   // the last good snapshot (a message says so) instead of ending the run.
   bool rewindable = false;
   bool restartable = false;         // keep the initial state for restart() (implied by rewindable)
+  // Set (by a signal handler) to end runScenario cleanly after the current tick.
+  const std::atomic<bool>* stopRequested = nullptr;
   double snapshotInterval = 0.5;    // s
   double snapshotHistory = 30.0;    // s
 };
@@ -49,13 +53,22 @@ struct RunResult {
   std::vector<vehicle::VehicleSample> samples;  // one per output interval (when kept)
   std::vector<double> steerInputs;  // steering input per sample
   std::optional<CourseResult> course;  // when the scenario has a course
+  bool interrupted = false;         // ended early on options.stopRequested
+  std::vector<float> stepSeconds;   // wall time of each manoeuvre step (per-step cost)
 };
+
+// p50 / p99 / max of per-step wall times, in microseconds.
+struct StepCost {
+  double p50 = 0, p99 = 0, max = 0;
+};
+StepCost stepCost(std::vector<float> seconds);
 
 class Run {
  public:
-  // Prepares the simulation and records the first sample. A vehicle that
-  // cannot be assembled, settled or started makes a failed run (failed());
-  // a telemetry file that cannot be opened throws.
+  // Prepares the simulation and records the first sample. A run that
+  // diverges while settling is a failed run (failed()); a vehicle that cannot
+  // be assembled or settled statically (PrepareError) and a telemetry file
+  // that cannot be opened (OutputError) throw.
   Run(Simulation& sim, const RunOptions& config);
   ~Run();
 
@@ -67,6 +80,11 @@ class Run {
   void restart();
   // One snapshot back (rewindable runs); false when there is none.
   bool rewind();
+  // Writes the telemetry out and closes it; throws OutputError on a write error.
+  void closeOutputs();
+  // The telemetry's segment: 0 from the start, +1 at each restart, rewind
+  // and divergence reset (a column of its own, so nothing is overwritten).
+  int segment() const { return segment_; }
 
   bool failed() const { return !failure_.empty(); }
   const std::string& failure() const { return failure_; }    // "diverged: Newton ..." 
@@ -91,6 +109,8 @@ class Run {
   // Moves the kept samples out (RunResult).
   std::vector<vehicle::VehicleSample>& samples() { return samples_; }
   std::vector<double>& steerInputs() { return steerInputs_; }
+  // The wall time of every manoeuvre step so far (s).
+  std::vector<float>& stepSeconds() { return stepSeconds_; }
 
  private:
   // What a rewind restores: the simulation's run state and the driver's
@@ -106,6 +126,8 @@ class Run {
   Snapshot snapshot();
   void restoreSnapshot(const Snapshot& s);
   void record();
+  TelemetryInputs rowInputs() const;
+  void startSegment();
   void absorbDivergence(const integ::StepReport& rep);
 
   Simulation& sim_;
@@ -116,6 +138,7 @@ class Run {
   vehicle::VehicleSample sample_;
   std::vector<vehicle::VehicleSample> samples_;
   std::vector<double> steerInputs_;
+  std::vector<float> stepSeconds_;
   long steps_ = 0, ticks_ = 0, totalSteps_ = 0, outputEvery_ = 1;
   int lastIterations_ = 0;
   double lastCorrection_ = 0;
@@ -127,13 +150,14 @@ class Run {
   long snapshotEveryTicks_ = 0;
   size_t maxSnapshots_ = 0;
   bool snapshotSinceReset_ = true;
-  int resets_ = 0;
+  int resets_ = 0, segment_ = 0;
   std::string notice_, divergence_;
 };
 
 // A whole scenario with its scripted driver, start to end: telemetry to
-// options.telemetryPath, samples kept when asked. Never throws for a run that
-// fails (RunResult::ok, failure).
+// options.telemetryPath, samples kept when asked. A run that fails is a
+// result (RunResult::ok, failure); bad vehicle data and outputs that cannot
+// be written throw (PrepareError, OutputError).
 RunResult runScenario(Simulation& sim, const RunOptions& options = {});
 
 }  // namespace bdfcar::scenario

@@ -7,26 +7,47 @@
 namespace bdfcar::scenario {
 
 using config::Dimension;
+using config::Range;
 using config::Table;
 
 namespace {
 
+// Ranges the scenario loader enforces (docs/INPUT-CHECKS.md); where the CLI
+// overrides the same setting (app/scenario_overrides.cpp) the bounds are its.
+const Range kDuration{1e-3, 1e6};                  // s (--duration)
+const Range kSettle{0.0, 1e4};                     // s (--settle)
+const Range kStep{1e-6, 0.1};                      // s (--step)
+const Range kTick{1e-3, 0.1};                      // s (--tick)
+const Range kOutputInterval{0.0, 1e6, true, true}; // s
+const Range kSpeed{0.0, 150.0, false, true};       // m/s (540 km/h)
+const Range kPosition{-1e6, 1e6};                  // m
+const Range kHeading{-1e3, 1e3};                   // rad
+const Range kTime{-1e6, 1e6};                      // s, signal times
+const Range kSpan{0.0, 1e6, true, false};          // s, ramp durations and periods
+const Range kTolerance{0.0, 1.0, true, false};
+const Range kGain{0.0, 1e6};                       // speed-hold gains
+const Range kLookAheadTime{0.0, 100.0, true, false};  // s
+const Range kLookAhead{0.0, 1e3, true, false};        // m
+
+// A file the scenario names, relative to the scenario: it must be a regular
+// file (an empty name or a folder would be read as one).
 std::string resolveAsset(Table& t, const std::string& key, const std::string& scenarioFile) {
   const std::filesystem::path rel = t.string(key);
+  if (rel.empty()) t.fail("expected a file name, got \"\"", key);
   const std::filesystem::path p =
       rel.is_absolute() ? rel : (std::filesystem::path(scenarioFile).parent_path() / rel).lexically_normal();
-  if (!std::filesystem::exists(p)) t.fail("the file '" + p.string() + "' does not exist", key);
+  std::error_code ec;  // no exceptions: a name too long or unreadable is "does not exist"
+  const auto status = std::filesystem::status(p, ec);
+  if (ec || !std::filesystem::exists(status)) t.fail("the file '" + p.string() + "' does not exist", key);
+  if (!std::filesystem::is_regular_file(status)) t.fail("'" + p.string() + "' is not a regular file", key);
   return p.string();
 }
 
 SignalSpec readSignal(Table t, double lo, double hi) {
   SignalSpec s;
   const std::string type = t.string("type");
-  auto level = [&](const char* key) {
-    const double v = t.number(key);
-    t.require(v >= lo && v <= hi, key, "a value in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return v;
-  };
+  const Range levels{lo, hi};
+  auto level = [&](const char* key) { return t.number(key, Dimension::None, levels); };
   if (type == "none") {
     s.kind = SignalSpec::Kind::None;
   } else if (type == "constant") {
@@ -34,28 +55,65 @@ SignalSpec readSignal(Table t, double lo, double hi) {
     s.level = level("level");
   } else if (type == "ramp") {
     s.kind = SignalSpec::Kind::Ramp;
-    s.start = t.number("start", Dimension::Time);
-    s.duration = t.number("duration", Dimension::Time);
-    t.require(s.duration > 0, "duration", "a positive ramp duration (s)");
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("duration", Dimension::Time, kSpan);
     s.level = level("level");
   } else if (type == "sine") {
     s.kind = SignalSpec::Kind::Sine;
-    s.start = t.number("start", Dimension::Time);
-    s.duration = t.number("period", Dimension::Time);
-    t.require(s.duration > 0, "period", "a positive period (s)");
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("period", Dimension::Time, kSpan);
+    s.level = level("amplitude");
+  } else if (type == "square") {
+    s.kind = SignalSpec::Kind::Square;
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("period", Dimension::Time, kSpan);
     s.level = level("amplitude");
   } else if (type == "table") {
     s.kind = SignalSpec::Kind::Table;
-    s.times = t.numbers("times", Dimension::Time);
-    s.values = t.numbers("values");
-    t.require(s.times.size() == s.values.size() && !s.times.empty(), "values", "as many values as times");
-    for (size_t i = 1; i < s.times.size(); ++i) t.require(s.times[i] > s.times[i - 1], "times", "increasing times");
-    for (double v : s.values) t.require(v >= lo && v <= hi, "values", "values in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    // Finite, increasing times: TableSignal::at searches them (a NaN breaks the search).
+    s.times = t.numbers("times", Dimension::Time, kTime);
+    s.values = t.numbers("values", Dimension::None, levels);
+    t.require(!s.times.empty(), "times", "at least one time");
+    t.require(s.times.size() == s.values.size(), "values", "as many values as times (" + std::to_string(s.times.size()) + ")");
+    for (size_t i = 1; i < s.times.size(); ++i)
+      if (!(s.times[i] > s.times[i - 1])) t.reject("times", "strictly increasing times", static_cast<int>(i));
   } else {
-    t.fail("unknown signal type '" + type + "': expected none, constant, ramp, sine or table", "type");
+    t.fail("unknown signal type '" + type + "': expected none, constant, ramp, sine, square or table", "type");
   }
+  // A driver's command through the vehicle's steering system (as a person's
+  // input, sampled once a tick) rather than a prescribed rack motion.
+  s.asDriverCommand = t.boolean("as_driver_command", false);
   t.finish();
   return s;
+}
+
+CheckSpec readCheck(Table& t) {
+  CheckSpec c;
+  c.enabled = true;
+  using O = CheckSpec::Outcome;
+  const std::string outcome = t.string("outcome", "survives");
+  if (outcome == "survives") c.outcome = O::Survives;
+  else if (outcome == "comes_to_rest") c.outcome = O::ComesToRest;
+  else if (outcome == "drives_on") c.outcome = O::DrivesOn;
+  else if (outcome == "stays_on_four_wheels") c.outcome = O::StaysOnFourWheels;
+  else if (outcome == "lands_and_drives_on") c.outcome = O::LandsAndDrivesOn;
+  else
+    t.fail("unknown outcome '" + outcome +
+               "': expected survives, comes_to_rest, drives_on, stays_on_four_wheels or lands_and_drives_on",
+           "outcome");
+  auto positive = [&](const char* key, Dimension d, double& x) {
+    x = t.number(key, d, x);
+    t.require(x > 0 && x < 1e6, key, "a positive bound");
+  };
+  positive("max_constraint_position", Dimension::Length, c.maxConstraintPosition);
+  positive("max_constraint_velocity", Dimension::Speed, c.maxConstraintVelocity);
+  positive("max_constraint_acceleration", Dimension::Acceleration, c.maxConstraintAcceleration);
+  positive("max_speed", Dimension::Speed, c.maxSpeed);
+  positive("max_rise", Dimension::Length, c.maxRise);
+  positive("rest_speed", Dimension::Speed, c.restSpeed);
+  positive("max_wheel_lift", Dimension::Time, c.maxWheelLift);
+  t.finish();
+  return c;
 }
 
 }  // namespace
@@ -74,28 +132,22 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   s.name = sc.string("name");
   s.vehicleFile = resolveAsset(sc, "vehicle", path);
   if (sc.has("terrain")) s.terrainFile = resolveAsset(sc, "terrain", path);
-  s.duration = sc.number("duration", Dimension::Time);
-  sc.require(s.duration > 0 && s.duration < 1e6, "duration", "a positive duration (s)");
-  s.outputInterval = sc.number("output_interval", Dimension::Time, s.outputInterval);
-  sc.require(s.outputInterval > 0, "output_interval", "a positive interval (s)");
-  s.tick = sc.number("tick", Dimension::Time, s.tick);
-  sc.require(s.tick >= 1e-3 && s.tick <= 0.1, "tick", "a driver tick in [1, 100] ms");
-  s.raysPerWheel = static_cast<int>(sc.integer("rays_per_wheel", 1));
-  sc.require(s.raysPerWheel >= 1 && s.raysPerWheel <= 15, "rays_per_wheel", "1 to 15 rays");
+  s.duration = sc.number("duration", Dimension::Time, kDuration);
+  s.outputInterval = sc.number("output_interval", Dimension::Time, kOutputInterval, s.outputInterval);
+  s.tick = sc.number("tick", Dimension::Time, kTick, s.tick);
+  s.raysPerWheel = static_cast<int>(sc.integerIn("rays_per_wheel", 1, 15, 1));
   sc.finish();
 
   if (auto st = root.optionalTable("start")) {
-    s.initialSpeed = st->number("speed", Dimension::Speed, 0.0);
-    st->require(s.initialSpeed >= 0 && s.initialSpeed < 150, "speed", "a speed in [0, 540 km/h)");
-    s.settleTime = st->number("settle", Dimension::Time, 0.0);
-    st->require(s.settleTime >= 0, "settle", "a non-negative settling time (s)");
+    s.initialSpeed = st->number("speed", Dimension::Speed, kSpeed, 0.0);
+    s.settleTime = st->number("settle", Dimension::Time, kSettle, 0.0);
     if (st->has("position")) {
-      const std::vector<double> p = st->numbers("position", Dimension::Length);
+      const std::vector<double> p = st->numbers("position", Dimension::Length, kPosition);
       st->require(p.size() == 2, "position", "[x, y] (m)");
       s.startX = p[0];
       s.startY = p[1];
     }
-    s.startHeading = st->number("heading", Dimension::Angle, 0.0);
+    s.startHeading = st->number("heading", Dimension::Angle, kHeading, 0.0);
     st->finish();
   }
   if (auto it = root.optionalTable("integrator")) {
@@ -106,21 +158,16 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
     else if (m == "rk4") i.method = IntegratorMethod::Rk4;
     else if (m == "euler") i.method = IntegratorMethod::SemiImplicitEuler;
     else it->fail("unknown method '" + m + "': expected bdf, rk4 or euler", "method");
-    i.step = it->number("step", Dimension::Time, i.step);
-    it->require(i.step > 0 && i.step <= 0.1, "step", "a step in (0, 0.1] s");
+    i.step = it->number("step", Dimension::Time, kStep, i.step);
     it->require(stepsPerTick(s.tick, i.step) > 0, "step",
                 "a step that divides the driver's tick of " + std::to_string(s.tick * 1e3) +
                     " ms (a whole number of steps per tick)");
-    b.order = static_cast<int>(it->integer("order", b.order));
-    it->require(b.order >= 1 && b.order <= 5, "order", "a BDF order from 1 to 5");
-    b.newtonIterations = static_cast<int>(it->integer("newton_iterations", b.newtonIterations));
-    it->require(b.newtonIterations >= 0 && b.newtonIterations <= 50, "newton_iterations", "0 (to tolerance) to 50");
-    b.jacobianEvery = static_cast<int>(it->integer("jacobian_every", b.jacobianEvery));
-    it->require(b.jacobianEvery >= 0, "jacobian_every", "0 (first step only) or a positive number of steps");
+    b.order = static_cast<int>(it->integerIn("order", 1, 5, b.order));
+    b.newtonIterations = static_cast<int>(it->integerIn("newton_iterations", 0, 50, b.newtonIterations));  // 0: to tolerance
+    b.jacobianEvery = static_cast<int>(it->integerIn("jacobian_every", 0, 1000000000, b.jacobianEvery));  // 0: first step only
     b.refreshWhenNotContracting = it->boolean("refresh_when_not_contracting", b.refreshWhenNotContracting);
-    b.atol = it->number("atol", Dimension::None, b.atol);
-    b.rtol = it->number("rtol", Dimension::None, b.rtol);
-    it->require(b.atol > 0 && b.rtol >= 0, "atol", "positive tolerances");
+    b.atol = it->number("atol", Dimension::None, kTolerance, b.atol);
+    b.rtol = it->number("rtol", Dimension::None, Range{0.0, 1.0, false, false}, b.rtol);
     it->finish();
   }
   if (auto t = root.optionalTable("steering")) s.steering = readSignal(*t, -1.0, 1.0);
@@ -128,29 +175,29 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   if (auto t = root.optionalTable("brake")) s.brake = readSignal(*t, 0.0, 1.0);
   if (auto sp = root.optionalTable("speed_control")) {
     s.speedControl.enabled = true;
-    s.speedControl.target = sp->number("target", Dimension::Speed);
-    s.speedControl.kp = sp->number("kp", Dimension::TorqueRate, s.speedControl.kp);
-    s.speedControl.ki = sp->number("ki", Dimension::None, s.speedControl.ki);
-    sp->require(s.speedControl.kp >= 0 && s.speedControl.ki >= 0, "kp", "non-negative gains");
+    s.speedControl.target = sp->number("target", Dimension::Speed, kSpeed);
+    s.speedControl.kp = sp->number("kp", Dimension::TorqueRate, kGain, s.speedControl.kp);
+    s.speedControl.ki = sp->number("ki", Dimension::None, kGain, s.speedControl.ki);
     sp->finish();
   }
   if (auto c = root.optionalTable("course")) {
     const std::string type = c->string("type");
     if (type != "iso3888") c->fail("unknown course '" + type + "': expected iso3888", "type");
     s.course.iso3888 = true;
-    s.course.startX = c->number("start_x", Dimension::Length, s.course.startX);
+    s.course.startX = c->number("start_x", Dimension::Length, kPosition, s.course.startX);
     c->finish();
   }
   if (auto d = root.optionalTable("driver")) {
     const std::string type = d->string("type");
     if (type != "path_follower") d->fail("unknown driver '" + type + "': expected path_follower", "type");
     s.pathFollower.enabled = true;
-    s.pathFollower.lookAheadTime = d->number("look_ahead_time", Dimension::Time, s.pathFollower.lookAheadTime);
-    s.pathFollower.minLookAhead = d->number("min_look_ahead", Dimension::Length, s.pathFollower.minLookAhead);
+    s.pathFollower.lookAheadTime = d->number("look_ahead_time", Dimension::Time, kLookAheadTime, s.pathFollower.lookAheadTime);
+    s.pathFollower.minLookAhead = d->number("min_look_ahead", Dimension::Length, kLookAhead, s.pathFollower.minLookAhead);
     d->finish();
     if (!s.course.iso3888) root.fail("a path_follower driver needs a [course] to follow", "driver");
     if (s.steering.kind != SignalSpec::Kind::None) root.fail("give either [steering] or a path_follower [driver], not both", "driver");
   }
+  if (auto c = root.optionalTable("check")) s.check = readCheck(*c);
   root.finish();
   return s;
 }

@@ -24,9 +24,10 @@ struct IntegratorSpec {
 
 // A scripted input channel (steering in [-1, 1], throttle and brake in [0, 1]).
 struct SignalSpec {
-  enum class Kind { None, Constant, Ramp, Sine, Table } kind = Kind::None;
-  double start = 0, duration = 0, level = 0;  // ramp: from 0 at start to level after duration; sine: period = duration, amplitude = level
+  enum class Kind { None, Constant, Ramp, Sine, Square, Table } kind = Kind::None;
+  double start = 0, duration = 0, level = 0;  // ramp: from 0 at start to level after duration; sine, square: period = duration, amplitude = level
   std::vector<double> times, values;          // table
+  bool asDriverCommand = false;               // steering: through the steering system, once a tick
 };
 
 struct SpeedControlSpec {
@@ -46,6 +47,22 @@ struct PathFollowerSpec {
   double minLookAhead = 5.0;   // m
 };
 
+// What a hard case must show ([check] in a scenario file; `bdfcar check`).
+// Every run must finish without a divergence and with finite states; the
+// outcome names what the car must do; the bounds are physical limits.
+struct CheckSpec {
+  bool enabled = false;
+  enum class Outcome { Survives, ComesToRest, DrivesOn, StaysOnFourWheels, LandsAndDrivesOn } outcome =
+      Outcome::Survives;
+  double maxConstraintPosition = 1e-3;      // m (or rad), largest |Phi| over the run
+  double maxConstraintVelocity = 1e-2;      // m/s
+  double maxConstraintAcceleration = 10.0;  // m/s^2
+  double maxSpeed = 100.0;                  // m/s
+  double maxRise = 2.0;                     // m, centre of mass above its start
+  double restSpeed = 0.05;                  // m/s, "at rest"
+  double maxWheelLift = 0.3;                // s, StaysOnFourWheels: longest time a wheel is off the ground
+};
+
 struct ScenarioSpec {
   std::string name, sourceFile;
   std::string vehicleFile, terrainFile;  // resolved paths; terrainFile empty = flat plane z = 0
@@ -63,6 +80,7 @@ struct ScenarioSpec {
   SpeedControlSpec speedControl;
   CourseSpec course;
   PathFollowerSpec pathFollower;
+  CheckSpec check;
 };
 
 // Integration steps per driver tick; 0 when the step does not divide the tick.

@@ -33,6 +33,18 @@ class SinePeriodSignal final : public Signal {
   double start_, period_, amplitude_;
 };
 
+// +amplitude for the first half of each period from `start`, -amplitude for
+// the second, 0 before: a flip-flop input (as a driver's command only: its
+// jumps are not a motion a rack could follow).
+class SquareSignal final : public Signal {
+ public:
+  SquareSignal(double start, double period, double amplitude) : start_(start), period_(period), amplitude_(amplitude) {}
+  SignalValue at(double t) const override;
+
+ private:
+  double start_, period_, amplitude_;
+};
+
 // Piecewise linear through (t_i, value_i), held before the first and after the last point.
 class TableSignal final : public Signal {
  public:
@@ -41,6 +53,19 @@ class TableSignal final : public Signal {
 
  private:
   std::vector<double> t_, v_;
+};
+
+// A scripted signal ramped in during the settling phase [t0, 0): from 0 at
+// t0 to the signal's value at 0, C1 (smoothstep), so that a steering that does
+// not start at zero moves the rack smoothly instead of jumping at t0.
+class RampedInSignal final : public Signal {
+ public:
+  RampedInSignal(std::unique_ptr<Signal> inner, double t0) : inner_(std::move(inner)), t0_(t0) {}
+  SignalValue at(double t) const override;
+
+ private:
+  std::unique_ptr<Signal> inner_;
+  double t0_;
 };
 
 class ConstantSignal final : public Signal {

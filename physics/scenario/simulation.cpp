@@ -16,21 +16,17 @@
 namespace bdfcar::scenario {
 
 double RackSignal::steerAt(double t) const {
-  const RackSegment& g = segment;
-  if (g.scripted) return scripted_.at(t).value;
-  if (t >= g.t1 || g.t1 <= g.t0) return g.s1;
-  if (t <= g.t0) return g.s0;
-  return g.s0 + (g.s1 - g.s0) * (t - g.t0) / (g.t1 - g.t0);
+  return segment.scripted ? scripted_.at(t).value : segment.steer(t);
 }
 
+double RackSignal::rateAt(double t) const { return segment.scripted ? scripted_.at(t).rate : segment.rate(t); }
+
 SignalValue RackSignal::at(double t) const {
-  const RackSegment& g = segment;
-  if (g.scripted) {
+  if (segment.scripted) {
     const SignalValue s = scripted_.at(t);
     return {gain_ * s.value, gain_ * s.rate, gain_ * s.accel};
   }
-  const double rate = (g.t1 > g.t0 && t < g.t1 + 1e-12) ? (g.s1 - g.s0) / (g.t1 - g.t0) : 0.0;
-  return {gain_ * steerAt(t), gain_ * rate, 0.0};
+  return {gain_ * segment.steer(t), gain_ * segment.rate(t), gain_ * segment.a};
 }
 
 bool RunState::operator==(const RunState& o) const {
@@ -45,6 +41,7 @@ std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
     case SignalSpec::Kind::Constant: return std::make_unique<ConstantSignal>(s.level);
     case SignalSpec::Kind::Ramp: return std::make_unique<RampSignal>(s.start, s.duration, s.level);
     case SignalSpec::Kind::Sine: return std::make_unique<SinePeriodSignal>(s.start, s.duration, s.level);
+    case SignalSpec::Kind::Square: return std::make_unique<SquareSignal>(s.start, s.duration, s.level);
     case SignalSpec::Kind::Table: return std::make_unique<TableSignal>(s.times, s.values);
   }
   return std::make_unique<ConstantSignal>(0.0);
@@ -77,14 +74,25 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   return w;
 }
 
+namespace {
+// The scripted steering; one that does not start at zero is ramped in during settling.
+std::unique_ptr<Signal> steeringSignal(const ScenarioSpec& spec) {
+  std::unique_ptr<Signal> s = makeSignal(spec.steering);
+  if (spec.settleTime > 0 && s->at(0.0).value != 0.0)
+    return std::make_unique<RampedInSignal>(std::move(s), -spec.settleTime);
+  return s;
+}
+}  // namespace
+
 Simulation::Simulation(const ScenarioSpec& spec) : Simulation(buildWorld(spec)) {}
 
 Simulation::Simulation(std::shared_ptr<const World> world)
     : world_(std::move(world)),
-      steering_(makeSignal(world_->spec.steering)),
+      steering_(steeringSignal(world_->spec)),
       throttle_(makeSignal(world_->spec.throttle)),
       brake_(makeSignal(world_->spec.brake)),
-      rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_) {
+      rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_),
+      steeringLimits_(steeringLimits(world_->vehicle.spec.steering)) {
   const ScenarioSpec& spec = world_->spec;
   const vehicle::Vehicle& veh = world_->vehicle;
   vehicle::TerrainContactOptions contact;
@@ -169,10 +177,12 @@ vehicle::EquilibriumReport Simulation::prepare() {
   q(ch.qIndex + 5) = yaw.y();
   q(ch.qIndex + 6) = yaw.z();
   std::string msg;
-  if (!vehicle::assemble(vehicle(), *dae_, t0, q, msg)) throw std::runtime_error(spec().vehicleFile + ": " + msg);
+  if (!vehicle::assemble(vehicle(), *dae_, t0, q, msg))
+    throw PrepareError(spec().vehicleFile + ": the vehicle cannot be assembled at the start: " + msg);
   integ::Vec lambda = integ::Vec::Zero(m.nc);
   vehicle::EquilibriumReport eq = vehicle::settleStatic(vehicle(), *dae_, *forces_, t0, q, lambda);
-  if (!eq.converged) throw std::runtime_error(spec().vehicleFile + ": " + eq.message);
+  if (!eq.converged)
+    throw PrepareError(spec().vehicleFile + ": no static equilibrium at the start: " + eq.message);
   eq.chassisHeight -= groundZ;
   eq.comHeight -= groundZ;
 
@@ -233,18 +243,27 @@ Simulation::ChassisState Simulation::chassisState() const {
   return s;
 }
 
-void Simulation::beginTick(const std::optional<DriverInput>& input) {
+void Simulation::steerToward(double command) {
   const double t = time(), tick = spec().tick;
+  const double s = rack_.steerAt(t), r = rack_.rateAt(t);
+  rack_.segment = {false, t, s, r, steeringAcceleration(steeringLimits_, s, r, command, tick)};
+}
+
+void Simulation::beginTick(const std::optional<DriverInput>& input) {
   scriptedDriver_ = !input;
   if (input) {
     input_.steer = std::clamp(input->steer, -1.0, 1.0);
     input_.throttle = std::clamp(input->throttle, 0.0, 1.0);
     input_.brake = std::clamp(input->brake, 0.0, 1.0);
-    rack_.segment = {false, t, rack_.steerAt(t), t + tick, input_.steer};
-  } else if (follower_ && t >= 0) {
+    steerToward(input_.steer);
+  } else if (follower_ && time() >= 0) {
     const ChassisState s = chassisState();
-    input_.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, tick);
-    rack_.segment = {false, t, rack_.steerAt(t), t + tick, input_.steer};
+    input_.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, spec().tick);
+    steerToward(input_.steer);
+  } else if (spec().steering.asDriverCommand && time() >= 0) {
+    // Sampled in the middle of the tick, away from a square signal's edges.
+    input_.steer = std::clamp(steering_->at(time() + 0.5 * spec().tick).value, -1.0, 1.0);
+    steerToward(input_.steer);
   }
 }
 
@@ -296,6 +315,21 @@ void Simulation::restore(const RunState& s) {
   scriptedDriver_ = s.scriptedDriver;
   airborne_ = s.airborne;
   prepared_ = true;
+}
+
+Simulation::ConstraintViolation Simulation::constraintViolation() {
+  const integ::SolutionPoint& p = integrator_->current();
+  integ::Residual r;
+  r.resize(dae_->sizes());
+  integ::Message msg;
+  // The evaluation leaves its outputs in the force laws' state: put it back,
+  // so that looking does not change the run.
+  const vehicle::VehicleForces::State keep = forces_->state();
+  const integ::EvalStatus st = dae_->residual(p.t, p.q, p.v, p.a, p.lambda, r, true, msg);
+  forces_->setState(keep);
+  if (st != integ::EvalStatus::Ok) return {INFINITY, INFINITY, INFINITY};
+  auto maxAbs = [](const integ::Vec& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; };
+  return {maxAbs(r.phi), maxAbs(r.phiDot), maxAbs(r.phiDDot)};
 }
 
 vehicle::VehicleSample Simulation::sample() { return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, integrator_->current()); }

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "integrator/step_types.h"
 #include "multibody/multibody_dae.h"
@@ -24,6 +25,7 @@
 #include "scenario/scenario_spec.h"
 #include "scenario/signals.h"
 #include "scenario/speed_controller.h"
+#include "scenario/steering_system.h"
 #include "terrain/terrain.h"
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
@@ -31,6 +33,13 @@
 #include "vehicle/vehicle_sample.h"
 
 namespace bdfcar::scenario {
+
+// The vehicle's data cannot be assembled or brought to static equilibrium at
+// the start: bad input (the vehicle file), not a failed simulation.
+class PrepareError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // What a scenario builds once and never changes while it runs.
 struct World {
@@ -44,15 +53,6 @@ struct World {
 // Loads the vehicle and terrain files and builds the world; throws on bad
 // data or a step that does not divide the tick.
 std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec);
-
-// The rack's target between two driver inputs: steer goes linearly from s0
-// at t0 to s1 at t1 (a real rack follows a sampled input), then holds; or,
-// when scripted, the scenario's analytic steering signal.
-struct RackSegment {
-  bool scripted = true;
-  double t0 = 0, s0 = 0, t1 = 0, s1 = 0;
-  bool operator==(const RackSegment&) const = default;
-};
 
 // Everything that changes while a scenario runs, as one plain value:
 // copyable, comparable, restorable. The Jacobian is not part of it (a run
@@ -76,6 +76,7 @@ class RackSignal final : public Signal {
   RackSegment segment;
   SignalValue at(double t) const override;
   double steerAt(double t) const;
+  double rateAt(double t) const;
 
  private:
   double gain_;
@@ -90,12 +91,15 @@ class Simulation {
 
   // Assembly, static equilibrium at the start pose, initial speed, then the
   // settling phase (tau = 0 at its end). Returns the static equilibrium.
+  // Throws PrepareError when the vehicle cannot be assembled or settled
+  // statically, std::runtime_error when the run diverges while settling.
   vehicle::EquilibriumReport prepare();
 
   // Starts a driver tick: nullopt = the scenario's own driver (scripted
   // signals, evaluated at every step; the path follower decides now), or a
-  // person's (a replay's) input, held for the tick with the rack moving
-  // linearly to the new steering over the tick.
+  // person's (a replay's) input, held for the tick. A person's and the path
+  // follower's steering reach the rack through the steering system
+  // (steering_system.h).
   void beginTick(const std::optional<DriverInput>& input);
   // One integration step of spec().integrator.step seconds.
   integ::StepReport step();
@@ -108,6 +112,13 @@ class Simulation {
   void restore(const RunState& s);
 
   double time() const { return integrator_->current().t; }
+  // The largest constraint residual of the current state at the position,
+  // velocity and acceleration levels (m or rad, per s, per s^2): the drift a
+  // long run must keep bounded.
+  struct ConstraintViolation {
+    double position = 0, velocity = 0, acceleration = 0;
+  };
+  ConstraintViolation constraintViolation();
   vehicle::VehicleSample sample();                  // at the current state
   vehicle::VehicleView view();                      // after sample()
   const World& world() const { return *world_; }
@@ -134,6 +145,7 @@ class Simulation {
   ChassisState chassisState() const;
   void makeIntegrator();
   void applyDrive(const DriverInput& in, double vx, double h);
+  void steerToward(double command);
 
   std::shared_ptr<const World> world_;
   std::unique_ptr<Signal> steering_, throttle_, brake_;
@@ -143,6 +155,7 @@ class Simulation {
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
   RackSignal rack_;
+  SteeringLimits steeringLimits_;
   DriverInput input_;
   bool scriptedDriver_ = true;
   bool prepared_ = false;

@@ -12,17 +12,12 @@ const char* TelemetryWriter::header() {
          "steer_FL_deg,steer_FR_deg,alpha_FL_rad,alpha_FR_rad,alpha_RL_rad,alpha_RR_rad,"
          "Fy_FL_N,Fy_FR_N,Fy_RL_N,Fy_RR_N,kappa_RL,kappa_RR,"
          "ax_mps2,speed_mps,throttle_in,brake_in,kappa_FL,kappa_FR,Fx_FL_N,Fx_FR_N,Fx_RL_N,Fx_RR_N,"
-         "spin_FL_radps,spin_FR_radps,spin_RL_radps,spin_RR_radps,rack_force_N,newton_iterations,newton_correction";
+         "spin_FL_radps,spin_FR_radps,spin_RL_radps,spin_RR_radps,rack_force_N,newton_iterations,newton_correction,"
+         "segment";
 }
 
-TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v) : v_(v) {
-  f_ = std::fopen(path.c_str(), "w");
-  if (!f_) throw std::runtime_error(path + ": cannot open the telemetry file for writing");
-  std::fprintf(f_, "%s\n", header());
-}
-
-TelemetryWriter::~TelemetryWriter() {
-  if (f_) std::fclose(f_);
+TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v) : file_(path), v_(v) {
+  file_.append(std::string(header()) + "\n");
 }
 
 void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInputs& in) {
@@ -37,19 +32,22 @@ void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInpu
     if (v_.wheel(w).driven) drive = s.driveTorque[w];
   const auto& st = v_.spec.steering;
   const double pinionDeg = config::radToDeg(st.steeringWheelFull * in.steer);
-  std::fprintf(f_,
+  char row[1536];
+  const int n = std::snprintf(row, sizeof row,
                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%d,%.4g\n",
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%d,%.4g,%d\n",
                s.t, s.com.x(), s.com.y(), s.com.z(), s.roll, s.pitch, s.yaw, s.vx, s.yawRate, s.ay, s.com.z() - z0_,
                s.rack - rack0_, s.Fz[0], s.Fz[1], s.Fz[2], s.Fz[3], in.steer, pinionDeg, st.rackTravelFull * in.steer,
                s.ayHorizontal, s.vy, drive, config::radToDeg(s.steerAngle[0]), config::radToDeg(s.steerAngle[1]),
                s.alpha[0], s.alpha[1], s.alpha[2], s.alpha[3], s.Fy[0], s.Fy[1], s.Fy[2], s.Fy[3], s.kappa[2],
                s.kappa[3], s.ax, s.speed, in.throttle, in.brake, s.kappa[0], s.kappa[1], s.Fx[0], s.Fx[1], s.Fx[2],
                s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce,
-               in.newtonIterations, in.newtonCorrection);
+               in.newtonIterations, in.newtonCorrection, in.segment);
+  if (n < 0 || n >= static_cast<int>(sizeof row)) throw OutputError(file_.path() + ": a telemetry row too long");
+  file_.append(row, static_cast<std::size_t>(n));
 }
 
 }  // namespace bdfcar::scenario

@@ -21,12 +21,16 @@ struct LineContext {
   throw TerrainFileError(at.path + ":" + std::to_string(at.line) + ": " + message);
 }
 
+// Coordinates beyond 1000 km are typos, not terrain (as in terrain_file.cpp).
+constexpr double kMaxCoordinate = 1e6;  // m
+
 // A whole token as a finite double (std::from_chars: locale-independent).
 double parseCoordinate(const LineContext& at, const std::string& token) {
   double x = 0.0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), x);
   if (ec != std::errc() || end != token.data() + token.size() || !std::isfinite(x))
     fail(at, "expected a finite number, got '" + token + "'");
+  if (std::abs(x) > kMaxCoordinate) fail(at, "expected a coordinate in [-1e+06, 1e+06] m, got '" + token + "'");
   return x;
 }
 
@@ -62,7 +66,9 @@ ObjMesh readObj(const std::string& path) {
     if (keyword == "v") {
       // x y z, then an optional w or r g b colour that terrain does not use.
       if (args.size() < 3) fail(at, "vertex needs x y z");
-      mesh.vertices.emplace_back(parseCoordinate(at, args[0]), parseCoordinate(at, args[1]), parseCoordinate(at, args[2]));
+      // One at a time: the first bad coordinate is the one reported (argument order is unspecified).
+      const double x = parseCoordinate(at, args[0]), y = parseCoordinate(at, args[1]), z = parseCoordinate(at, args[2]);
+      mesh.vertices.emplace_back(x, y, z);
     } else if (keyword == "f") {
       if (args.size() < 3) fail(at, "face needs at least 3 vertices");
       const int n = static_cast<int>(mesh.vertices.size());

@@ -16,11 +16,16 @@ using config::Range;
 using config::Table;
 
 const Range kFriction{0.0, 2.0, true, false};
+// Coordinates beyond 1000 km are typos, not terrain (the same bound as road_file.cpp).
+const Range kCoordinate{-1e6, 1e6};
+const Range kHeight{-1e4, 1e4};  // m, heightfield samples
+const Range kDirection{-1e3, 1e3};
 
 void readPlane(Table t, TerrainData& data) {
   t.rejectUnknownKeys({"point", "normal"});
-  data.planePoint = t.vector3("point", Dimension::Length, Eigen::Vector3d::Zero());
-  const Eigen::Vector3d normal = t.vector3("normal", Dimension::None, Eigen::Vector3d::UnitZ());
+  data.planePoint = t.has("point") ? t.vector3("point", Dimension::Length, kCoordinate) : Eigen::Vector3d::Zero().eval();
+  const Eigen::Vector3d normal =
+      t.has("normal") ? t.vector3("normal", Dimension::None, kDirection) : Eigen::Vector3d::UnitZ().eval();
   t.require(normal.norm() > 0.0, "normal", "a non-zero normal");
   data.planeNormal = normal.normalized();
 }
@@ -38,7 +43,7 @@ void readMesh(Table t, const std::string& tomlPath, TerrainData& data) {
   } catch (const TerrainFileError& e) {
     t.fail("names an unusable OBJ file: " + std::string(e.what()), "obj");
   }
-  const Eigen::Vector3d offset = t.vector3("offset", Dimension::Length, Eigen::Vector3d::Zero());
+  const Eigen::Vector3d offset = t.has("offset") ? t.vector3("offset", Dimension::Length, kCoordinate) : Eigen::Vector3d::Zero().eval();
   data.vertices = std::move(obj.vertices);
   for (Eigen::Vector3d& v : data.vertices) v += offset;
   data.triangles = std::move(obj.triangles);
@@ -47,13 +52,17 @@ void readMesh(Table t, const std::string& tomlPath, TerrainData& data) {
 // Rows of equal length, row r at y0 + r dy, column c at x0 + c dx.
 void readHeightfield(Table t, TerrainData& data) {
   t.rejectUnknownKeys({"x0", "y0", "dx", "dy", "heights"});
-  data.x0 = t.numberIn("x0", {}, 0.0);
-  data.y0 = t.numberIn("y0", {}, 0.0);
+  data.x0 = t.numberIn("x0", kCoordinate, 0.0);
+  data.y0 = t.numberIn("y0", kCoordinate, 0.0);
   data.dx = t.numberIn("dx", {0.0, 1e3, true, false});
   data.dy = t.numberIn("dy", {0.0, 1e3, true, false});
   const std::vector<std::vector<double>> rows = t.grid("heights", 2, 2);
   data.heights.clear();
-  for (const std::vector<double>& row : rows) data.heights.insert(data.heights.end(), row.begin(), row.end());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (double h : rows[r]) {
+      if (!kHeight.contains(h)) t.reject("heights", "rows of heights " + kHeight.text() + " m", static_cast<int>(r));
+      data.heights.push_back(h);
+    }
   data.rows = static_cast<int>(rows.size());
   data.cols = static_cast<int>(rows.front().size());
 }
@@ -62,10 +71,10 @@ RoadMarkings readMarkings(Table t) {
   t.rejectUnknownKeys({"start_x", "end_x", "centre_y", "lanes", "lane_width"});
   RoadMarkings m;
   m.present = true;
-  m.startX = t.numberIn("start_x", {});
-  m.endX = t.numberIn("end_x", {});
+  m.startX = t.numberIn("start_x", kCoordinate);
+  m.endX = t.numberIn("end_x", kCoordinate);
   t.require(m.endX > m.startX, "end_x", "a number greater than start_x");
-  m.centreY = t.numberIn("centre_y", {}, 0.0);
+  m.centreY = t.numberIn("centre_y", kCoordinate, 0.0);
   m.lanes = static_cast<int>(t.integerIn("lanes", 1, 8, 2));
   m.laneWidth = t.numberIn("lane_width", {0.0, 10.0, true, false}, 3.5);
   return m;

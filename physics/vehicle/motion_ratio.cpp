@@ -27,11 +27,23 @@ std::vector<MotionRatio> motionRatios(const Vehicle& v) {
     if (i == v.layout.chassis || i == v.layout.rack || spin) continue;
     for (int k = 0; k < b.nv; ++k) free.push_back(b.vIndex + k);
   }
+  // No suspension coordinates (wheels on the chassis): no spring moves with a
+  // wheel, and the SVD below would read the first of no singular values.
+  if (free.empty()) {
+    std::vector<MotionRatio> none(m.springs.size());
+    for (size_t k = 0; k < none.size(); ++k) none[k].element = m.springs[k].name;
+    return none;
+  }
   Eigen::MatrixXd Jf(m.nc, free.size());
   for (size_t j = 0; j < free.size(); ++j) Jf.col(j) = J.col(free[j]);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jf, Eigen::ComputeFullV);
-  const int rank = static_cast<int>((svd.singularValues().array() > 1e-9 * svd.singularValues()(0)).count());
-  const Eigen::MatrixXd N = svd.matrixV().rightCols(free.size() - rank);  // null-space basis
+  // Null-space basis of the constraints over the free coordinates (all of
+  // them when there are no cut joints: an SVD of no rows is undefined).
+  Eigen::MatrixXd N = Eigen::MatrixXd::Identity(free.size(), free.size());
+  if (m.nc > 0) {
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jf, Eigen::ComputeFullV);
+    const int rank = static_cast<int>((svd.singularValues().array() > 1e-9 * svd.singularValues()(0)).count());
+    N = svd.matrixV().rightCols(free.size() - rank);
+  }
   // Velocity of a world point of a body along a joint-space direction, by finite differences of positions.
   auto pointRate = [&](const Eigen::VectorXd& dq, int body, const Eigen::Vector3d& local) {
     const double e = 1e-7;

@@ -10,9 +10,37 @@
 namespace bdfcar::vehicle {
 
 using config::Dimension;
+using config::Range;
 using config::Table;
 
 namespace {
+
+// Physical ranges the loader enforces (docs/INPUT-CHECKS.md): wide enough for
+// any road vehicle, narrow enough to catch a slipped unit, sign or digit.
+const Range kMass{0.0, 1e6, true, true};                  // kg
+const Range kCoordinate{-100.0, 100.0, true, true};       // m, a point in the chassis frame
+const Range kDirection{-1e3, 1e3};                        // components of a direction vector
+const Range kInertiaEntry{-1e6, 1e6, true, true};         // kg m^2
+const Range kPositiveLength{0.0, 100.0, true, true};      // m
+const Range kFreeLength{0.0, 100.0, false, true};         // m (0: none)
+const Range kDesignHeight{0.0, 10.0, true, true};         // m
+const Range kForce{-1e7, 1e7};                            // N, preloads
+const Range kStiffness{0.0, 1e9};                         // N/m, springs and stops (0: none)
+const Range kDamping{0.0, 1e8};                           // N s/m
+const Range kCurveEntry{-1e9, 1e9};                       // x (m or m/s) and force (N) of a curve
+const Range kTyreRadius{0.05, 2.0};                       // m
+const Range kTyreWidth{0.0, 2.0, true, false};            // m
+const Range kTyreStiffness{0.0, 1e9, true, false};        // N/m, N, N/rad
+const Range kFriction{0.0, 3.0, true, false};
+const Range kRelaxationLength{0.0, 10.0, true, false};    // m
+const Range kBlendSpeed{0.0, 50.0, true, false};          // m/s
+const Range kRollingResistance{0.0, 1.0};
+const Range kSpinInertia{0.0, 100.0};                     // kg m^2
+const Range kTorque{0.0, 1e6};                            // N m, brakes and drive
+const Range kRackTravel{-1.0, 1.0};                       // m at full steering input
+const Range kSteeringWheelAngle{0.0, 100.0, true, false}; // rad at full steering input
+const Range kDragArea{0.0, 100.0};                        // 0.5 rho Cd A, N s^2/m^2
+const Range kColour{0.0, 1.0};
 
 // One copy of a (possibly mirrored) item: the side suffix and the reflection.
 struct Side {
@@ -74,7 +102,7 @@ Vec3 Loader::vectorOf(Table& t, const std::string& key, const Side& s) {
     c.finish();
     return r;
   }
-  return s.M * t.vector3(key, Dimension::None);
+  return s.M * t.vector3(key, Dimension::None, kDirection);
 }
 
 Vec3 Loader::point(Table& t, const std::string& key, const Side& s) {
@@ -91,7 +119,7 @@ Vec3 Loader::point(Table& t, const std::string& key, const Side& s) {
     m.finish();
     return s.M * (0.5 * (points_.at(a) + points_.at(b)));
   }
-  return s.M * t.vector3(key, Dimension::Length);
+  return s.M * t.vector3(key, Dimension::Length, kCoordinate);
 }
 
 std::string Loader::bodyRef(Table& t, const std::string& key, const Side& s) {
@@ -101,20 +129,22 @@ std::string Loader::bodyRef(Table& t, const std::string& key, const Side& s) {
     if (s.suffix.empty()) t.fail("'" + base + "' is mirrored: refer to it from a mirrored item or as " + base + "L / " + base + "R", key);
     name = base + s.suffix;
   }
+  // Bodies are defined parent first, so a joint can only name an earlier body:
+  // the tree has no cycles by construction (a body naming itself is unknown here).
   if (!bodies_.count(name)) t.fail("unknown body '" + base + "' (bodies must be defined before they are used)", key);
   return name;
 }
 
 void Loader::readPoints() {
   if (auto p = root_.optionalTable("points")) {
-    for (const std::string& k : p->keys()) points_[k] = p->vector3(k, Dimension::Length);
+    for (const std::string& k : p->keys()) points_[k] = p->vector3(k, Dimension::Length, kCoordinate);
     p->finish();
   }
   spec_.points = points_;
 }
 
 Mat3 inertiaTensor(Table& t, const Mat3& axes) {
-  const std::vector<double> v = t.numbers("inertia", Dimension::Inertia);
+  const std::vector<double> v = t.numbers("inertia", Dimension::Inertia, kInertiaEntry);
   t.require(v.size() == 3 || v.size() == 6, "inertia",
             "3 principal moments [Ixx, Iyy, Izz] or 6 values [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] (kg m^2)");
   Mat3 I = Vec3(v[0], v[1], v[2]).asDiagonal();
@@ -127,7 +157,7 @@ Mat3 inertiaTensor(Table& t, const Mat3& axes) {
   const Vec3 p = eig.eigenvalues();
   t.require(p(0) > 0 && p(0) + p(1) >= p(2) * (1 - 1e-9), "inertia",
             "a positive-definite inertia that satisfies the triangle inequality (principal moments " +
-                std::to_string(p(0)) + ", " + std::to_string(p(1)) + ", " + std::to_string(p(2)) + ")");
+                config::formatNumber(p(0)) + ", " + config::formatNumber(p(1)) + ", " + config::formatNumber(p(2)) + ")");
   return axes * I * axes.transpose();
 }
 
@@ -161,8 +191,7 @@ void Loader::readBodies() {
       body.name = base + s.suffix;
       body.line = b.line();
       if (bodies_.count(body.name)) b.fail("duplicate body name '" + body.name + "'", "name");
-      body.mass = b.number("mass", Dimension::Mass);
-      b.require(body.mass > 0, "mass", "a positive mass (kg), got " + std::to_string(body.mass));
+      body.mass = b.number("mass", Dimension::Mass, kMass);
       body.com = point(b, "com", s);
       // Inertia axes: the chassis axes (reflected on the right: M I M), or a
       // frame from two directions (computed from the mirrored points).
@@ -171,8 +200,7 @@ void Loader::readBodies() {
       body.inertia = inertiaTensor(b, axes);
       // Point masses lumped into the body (e.g. halves of links modelled as massless distance constraints).
       for (Table& pm : b.optionalTables("point_masses")) {
-        const double mi = pm.number("mass", Dimension::Mass);
-        pm.require(mi > 0, "mass", "a positive mass (kg)");
+        const double mi = pm.number("mass", Dimension::Mass, kMass);
         const Vec3 pi = point(pm, "at", s);
         pm.finish();
         const double M = body.mass + mi;
@@ -221,15 +249,18 @@ void Loader::readBodies() {
 }
 
 void Loader::readCutJoints() {
+  std::set<std::string> names;
   for (Table& c : root_.optionalTables("cut_joints")) {
     const std::string base = c.string("name");
     for (const Side& s : sidesOf(c)) {
       CutJointSpec cut;
       cut.name = base + s.suffix;
       cut.line = c.line();
+      if (!names.insert(cut.name).second) c.fail("duplicate cut joint name '" + cut.name + "'", "name");
       const std::string type = c.string("type");
       cut.bodyA = bodyRef(c, "body_a", s);
       cut.bodyB = bodyRef(c, "body_b", s);
+      if (cut.bodyA == cut.bodyB) c.fail("joins body '" + cut.bodyA + "' to itself: expected two different bodies", "body_b");
       if (type == "spherical") {
         cut.kind = CutKind::Spherical;
         cut.pointA = cut.pointB = point(c, "at", s);
@@ -237,8 +268,7 @@ void Loader::readCutJoints() {
         cut.kind = CutKind::Distance;
         cut.pointA = point(c, "at_a", s);
         cut.pointB = point(c, "at_b", s);
-        cut.length = c.number("length", Dimension::Length, -1.0);
-        if (c.has("length")) c.require(cut.length > 0, "length", "a positive length (m)");
+        cut.length = c.number("length", Dimension::Length, kPositiveLength, -1.0);  // -1: the design distance
       } else {
         c.fail("unknown cut joint type '" + type + "': expected spherical or distance", "type");
       }
@@ -248,10 +278,11 @@ void Loader::readCutJoints() {
   }
 }
 
-mb::ForceCurve curve(Table& t, const std::string& linearKey, const std::string& tableKey, Dimension linearDim) {
+mb::ForceCurve curve(Table& t, const std::string& linearKey, const std::string& tableKey, Dimension linearDim,
+                     const Range& linearRange) {
   mb::ForceCurve c;
   if (t.has(tableKey)) {
-    const std::vector<double> flat = t.numbers(tableKey, Dimension::None);
+    const std::vector<double> flat = t.numbers(tableKey, Dimension::None, kCurveEntry);
     t.require(flat.size() >= 4 && flat.size() % 2 == 0, tableKey, "pairs [x0, F0, x1, F1, ...] (at least two points)");
     for (size_t i = 0; i < flat.size(); i += 2) {
       c.x.push_back(flat[i]);
@@ -260,38 +291,38 @@ mb::ForceCurve curve(Table& t, const std::string& linearKey, const std::string& 
     for (size_t i = 1; i < c.x.size(); ++i)
       t.require(c.x[i] > c.x[i - 1], tableKey, "strictly increasing x values");
   } else {
-    c.coefficient = t.number(linearKey, linearDim, 0.0);
+    c.coefficient = t.number(linearKey, linearDim, linearRange, 0.0);
   }
   return c;
 }
 
 void Loader::readSprings() {
+  std::set<std::string> names;
   for (Table& t : root_.optionalTables("springs")) {
     const std::string base = t.string("name");
     for (const Side& s : sidesOf(t)) {
       SpringSpec sp;
       sp.name = base + s.suffix;
       sp.line = t.line();
+      if (!names.insert(sp.name).second) t.fail("duplicate spring name '" + sp.name + "'", "name");
       sp.bodyA = bodyRef(t, "body_a", s);
       sp.bodyB = bodyRef(t, "body_b", s);
       sp.pointA = point(t, "at_a", s);
       sp.pointB = point(t, "at_b", s);
-      sp.freeLength = t.number("free_length", Dimension::Length, 0.0);
-      sp.preload = t.number("preload", Dimension::Force, 0.0);
-      sp.spring = curve(t, "stiffness", "spring_curve", Dimension::Stiffness);
-      sp.damper = curve(t, "damping", "damper_curve", Dimension::Damping);
-      t.require(sp.spring.coefficient >= 0, "stiffness", "a non-negative stiffness (N/m)");
-      t.require(sp.damper.coefficient >= 0, "damping", "a non-negative damping (N s/m)");
+      sp.freeLength = t.number("free_length", Dimension::Length, kFreeLength, 0.0);
+      sp.preload = t.number("preload", Dimension::Force, kForce, 0.0);
+      sp.spring = curve(t, "stiffness", "spring_curve", Dimension::Stiffness, kStiffness);
+      sp.damper = curve(t, "damping", "damper_curve", Dimension::Damping, kDamping);
       if (sp.spring.coefficient > 0 || !sp.spring.x.empty())
         t.require(sp.freeLength > 0, "free_length", "a positive free length (m) for a spring");
       if (auto b = t.optionalTable("bump_stop")) {
-        sp.bumpLength = b->number("length", Dimension::Length);
-        sp.bumpStiffness = b->number("stiffness", Dimension::Stiffness);
+        sp.bumpLength = b->number("length", Dimension::Length, kFreeLength);
+        sp.bumpStiffness = b->number("stiffness", Dimension::Stiffness, kStiffness);
         b->finish();
       }
       if (auto r = t.optionalTable("rebound_stop")) {
-        sp.reboundLength = r->number("length", Dimension::Length);
-        sp.reboundStiffness = r->number("stiffness", Dimension::Stiffness);
+        sp.reboundLength = r->number("length", Dimension::Length, kFreeLength);
+        sp.reboundStiffness = r->number("stiffness", Dimension::Stiffness, kStiffness);
         r->finish();
       }
       spec_.springs.push_back(sp);
@@ -310,31 +341,25 @@ tyre::TyreParams Loader::readTyre(Table t) {
 
 tyre::FialaParams Loader::readFiala(Table& t) {
   tyre::FialaParams p;
-  auto positive = [&](const char* key, Dimension d, double& out) {
-    out = t.number(key, d);
-    t.require(out > 0, key, std::string("a positive ") + config::dimensionName(d));
-  };
-  positive("unloaded_radius", Dimension::Length, p.unloadedRadius);
-  positive("width", Dimension::Length, p.width);
-  positive("vertical_stiffness", Dimension::Stiffness, p.verticalStiffness);
-  p.verticalDamping = t.number("vertical_damping", Dimension::Damping);
-  p.rollingResistance = t.number("rolling_resistance", Dimension::None);
-  positive("slip_stiffness", Dimension::Force, p.slipStiffness);
-  p.corneringStiffness = t.number("cornering_stiffness", Dimension::None);  // N/rad
-  t.require(p.corneringStiffness > 0, "cornering_stiffness", "a positive cornering stiffness (N/rad)");
-  p.uMin = t.number("u_min");
-  p.uMax = t.number("u_max");
-  t.require(p.uMin > 0 && p.uMax >= p.uMin && p.uMax <= 3, "u_max", "0 < u_min <= u_max <= 3");
-  p.referenceFriction = t.number("reference_friction", Dimension::None, p.referenceFriction);
-  p.relaxationLengthX = t.number("relaxation_length_x", Dimension::Length, p.relaxationLengthX);
-  p.relaxationLengthY = t.number("relaxation_length_y", Dimension::Length, p.relaxationLengthY);
-  t.require(p.relaxationLengthX > 0 && p.relaxationLengthY > 0, "relaxation_length_x", "positive relaxation lengths");
-  p.lowSpeedBlend0 = t.number("low_speed_blend_start", Dimension::Speed, p.lowSpeedBlend0);
-  p.lowSpeedBlend1 = t.number("low_speed_blend_end", Dimension::Speed, p.lowSpeedBlend1);
-  t.require(p.lowSpeedBlend0 > 0 && p.lowSpeedBlend1 > p.lowSpeedBlend0, "low_speed_blend_end",
+  p.unloadedRadius = t.number("unloaded_radius", Dimension::Length, kTyreRadius);
+  p.width = t.number("width", Dimension::Length, kTyreWidth);
+  p.verticalStiffness = t.number("vertical_stiffness", Dimension::Stiffness, kTyreStiffness);
+  p.verticalDamping = t.number("vertical_damping", Dimension::Damping, kDamping);
+  p.rollingResistance = t.number("rolling_resistance", Dimension::None, kRollingResistance);
+  p.slipStiffness = t.number("slip_stiffness", Dimension::Force, kTyreStiffness);
+  p.corneringStiffness = t.number("cornering_stiffness", Dimension::None, kTyreStiffness);  // N/rad
+  p.uMin = t.number("u_min", Dimension::None, kFriction);
+  p.uMax = t.number("u_max", Dimension::None, kFriction);
+  t.require(p.uMax >= p.uMin, "u_max", "0 < u_min <= u_max <= 3");
+  p.referenceFriction = t.number("reference_friction", Dimension::None, kFriction, p.referenceFriction);
+  p.relaxationLengthX = t.number("relaxation_length_x", Dimension::Length, kRelaxationLength, p.relaxationLengthX);
+  p.relaxationLengthY = t.number("relaxation_length_y", Dimension::Length, kRelaxationLength, p.relaxationLengthY);
+  p.lowSpeedBlend0 = t.number("low_speed_blend_start", Dimension::Speed, kBlendSpeed, p.lowSpeedBlend0);
+  p.lowSpeedBlend1 = t.number("low_speed_blend_end", Dimension::Speed, kBlendSpeed, p.lowSpeedBlend1);
+  t.require(p.lowSpeedBlend1 > p.lowSpeedBlend0, "low_speed_blend_end",
             "0 < low_speed_blend_start < low_speed_blend_end (m/s)");
-  p.lowSpeedDampingX = t.number("low_speed_damping_x", Dimension::Damping, p.lowSpeedDampingX);
-  p.lowSpeedDampingY = t.number("low_speed_damping_y", Dimension::Damping, p.lowSpeedDampingY);
+  p.lowSpeedDampingX = t.number("low_speed_damping_x", Dimension::Damping, kDamping, p.lowSpeedDampingX);
+  p.lowSpeedDampingY = t.number("low_speed_damping_y", Dimension::Damping, kDamping, p.lowSpeedDampingY);
   t.finish();
   return p;
 }
@@ -353,10 +378,11 @@ void Loader::readWheels() {
       const std::string tyreName = w.string("tyre");
       if (!byName.count(tyreName)) w.fail("unknown tyre '" + tyreName + "' (define it as [tyres." + tyreName + "])", "tyre");
       wh.tyre = byName.at(tyreName);
-      wh.spinInertia = w.number("spin_inertia", Dimension::Inertia, 0.0);
-      wh.brakeTorque = w.number("brake_torque", Dimension::Torque, 0.0);
+      wh.spinInertia = w.number("spin_inertia", Dimension::Inertia, kSpinInertia, 0.0);
+      wh.brakeTorque = w.number("brake_torque", Dimension::Torque, kTorque, 0.0);
       wh.driven = w.boolean("driven", false);
-      w.require(wh.spinInertia >= 0 && wh.brakeTorque >= 0, "brake_torque", "non-negative values");
+      for (const WheelSpec& other : spec_.wheels)
+        if (other.position == wh.position) w.fail("duplicate wheel position '" + wh.position + "'", "position");
       spec_.wheels.push_back(wh);
     }
     w.finish();
@@ -380,14 +406,20 @@ void Loader::readSteeringAndDriveline() {
   Table st = root_.table("steering");
   const Side none;
   spec_.steering.rack = bodyRef(st, "rack", none);
-  spec_.steering.rackTravelFull = st.number("rack_travel_full", Dimension::Length);
-  spec_.steering.steeringWheelFull = st.number("steering_wheel_angle_full", Dimension::Angle);
+  spec_.steering.rackTravelFull = st.number("rack_travel_full", Dimension::Length, kRackTravel);
+  spec_.steering.steeringWheelFull = st.number("steering_wheel_angle_full", Dimension::Angle, kSteeringWheelAngle);
   st.require(spec_.steering.rackTravelFull != 0, "rack_travel_full", "a non-zero rack travel (m) at full input");
-  st.require(spec_.steering.steeringWheelFull > 0, "steering_wheel_angle_full", "a positive angle");
+  SteeringSpec& sys = spec_.steering;
+  sys.responseTime = st.number("response_time", Dimension::Time, sys.responseTime);
+  st.require(sys.responseTime >= 0.005 && sys.responseTime <= 1.0, "response_time", "a response time in [5 ms, 1 s]");
+  sys.maxRackSpeed = st.number("max_rack_speed", Dimension::Speed, sys.maxRackSpeed);
+  st.require(sys.maxRackSpeed > 0 && sys.maxRackSpeed <= 5.0, "max_rack_speed", "a rack speed in (0, 5] m/s");
+  sys.maxRackAcceleration = st.number("max_rack_acceleration", Dimension::Acceleration, sys.maxRackAcceleration);
+  st.require(sys.maxRackAcceleration > 0 && sys.maxRackAcceleration <= 1000.0, "max_rack_acceleration",
+             "a rack acceleration in (0, 1000] m/s^2");
   st.finish();
   if (auto d = root_.optionalTable("driveline")) {
-    spec_.maxDriveTorque = d->number("max_torque", Dimension::Torque);
-    d->require(spec_.maxDriveTorque >= 0, "max_torque", "a non-negative torque (N m)");
+    spec_.maxDriveTorque = d->number("max_torque", Dimension::Torque, kTorque);
     const std::string reaction = d->string("torque_reaction", "chassis");
     if (reaction == "chassis") spec_.driveReaction = DriveReaction::Chassis;
     else if (reaction == "carrier") spec_.driveReaction = DriveReaction::Carrier;
@@ -396,8 +428,7 @@ void Loader::readSteeringAndDriveline() {
     d->finish();
   }
   if (auto a = root_.optionalTable("aerodynamics")) {
-    spec_.dragArea = a->number("drag_area", Dimension::None);
-    a->require(spec_.dragArea >= 0, "drag_area", "a non-negative 0.5 rho Cd A (N s^2/m^2)");
+    spec_.dragArea = a->number("drag_area", Dimension::None, kDragArea);  // 0.5 rho Cd A, N s^2/m^2
     a->finish();
   }
 }
@@ -410,12 +441,15 @@ void Loader::readAppearance() {
       const std::filesystem::path mesh = a->string("body_mesh");
       g.bodyMesh = mesh.is_absolute() ? mesh.string()
                                       : (std::filesystem::path(spec_.sourceFile).parent_path() / mesh).lexically_normal().string();
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(g.bodyMesh, ec))
+        a->fail("the file '" + g.bodyMesh + "' does not exist or is not a regular file", "body_mesh");
     }
-    if (a->has("colour")) g.bodyColour = a->vector3("colour", Dimension::None);
-    g.length = a->number("length", Dimension::Length, g.length);
-    g.width = a->number("width", Dimension::Length, g.width);
-    g.height = a->number("height", Dimension::Length, g.height);
-    if (a->has("body_offset")) g.bodyOffset = a->vector3("body_offset", Dimension::Length);
+    if (a->has("colour")) g.bodyColour = a->vector3("colour", Dimension::None, kColour);
+    g.length = a->number("length", Dimension::Length, kPositiveLength, g.length);
+    g.width = a->number("width", Dimension::Length, kPositiveLength, g.width);
+    g.height = a->number("height", Dimension::Length, kPositiveLength, g.height);
+    if (a->has("body_offset")) g.bodyOffset = a->vector3("body_offset", Dimension::Length, kCoordinate);
     a->finish();
   }
   // Wheel layout from the data, for drawing.
@@ -436,8 +470,7 @@ VehicleSpec Loader::load() {
   Table v = root_.table("vehicle");
   spec_.name = v.string("name");
   spec_.description = v.string("description", "");
-  spec_.designHeight = v.number("design_height", Dimension::Length);
-  v.require(spec_.designHeight > 0, "design_height", "a positive height of the chassis frame above the ground (m)");
+  spec_.designHeight = v.number("design_height", Dimension::Length, kDesignHeight);
   v.finish();
   readPoints();
   readBodies();

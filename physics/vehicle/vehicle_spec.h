@@ -69,6 +69,12 @@ struct SteeringSpec {
   std::string rack;            // body on a prismatic joint along chassis y
   double rackTravelFull = 0;   // rack travel toward -y (right) at steer = +1 (full left), m
   double steeringWheelFull = 0;// steering-wheel (pinion) angle at steer = +1, rad
+  // The steering system between a driver's command and the rack (power
+  // assist): the rack follows the command with this response time, never
+  // faster than maxRackSpeed nor with more than maxRackAcceleration.
+  double responseTime = 0.03;        // s
+  double maxRackSpeed = 0.15;        // m/s (about 1000 deg/s at the steering wheel of a 50 mm/rev rack)
+  double maxRackAcceleration = 6.0;  // m/s^2
 };
 
 // Where the reaction of a drive torque goes: an inboard differential reacts

@@ -10,6 +10,10 @@
 
 namespace bdfcar::input {
 
+// The longest --seconds / --interval accepted (about 11 days): longer is a typo,
+// and 1e300 s would overflow the tick count.
+constexpr double kMaxMonitorSeconds = 1e6;
+
 struct MonitorOptions {
   double seconds = 0.0;        // how long to show live values; 0: until Ctrl-C
   double printInterval = 0.1;  // seconds between printed lines
@@ -19,7 +23,8 @@ struct MonitorOptions {
   std::FILE* out = stdout;
 };
 
-// Runs the monitor; returns the process exit code (0 ok, 1 bad mapping or SDL failure).
+// Runs the monitor; returns the process exit code (0 ok, 1 bad mapping, bad
+// seconds / interval (non-finite or outside [0, kMaxMonitorSeconds]) or SDL failure).
 int runInputMonitor(const MonitorOptions& options);
 
 }  // namespace bdfcar::input

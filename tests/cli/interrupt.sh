@@ -1,0 +1,31 @@
+#!/bin/sh
+# A run stopped by SIGINT or SIGTERM ends cleanly (its summary, exit 128 +
+# signal) and a run killed outright (SIGKILL) still leaves telemetry that
+# ends on a complete row: every row has the header's number of columns.
+# Usage: interrupt.sh BDFCAR SCENARIO
+bdfcar=$1; scenario=$2
+dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
+complete_rows() {
+  f=$1
+  [ -s "$f" ] || { echo "check: $f is empty"; exit 1; }
+  [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "check: $f does not end on a newline"; exit 1; }
+  awk -F, 'NR == 1 { n = NF } NF != n { print "check: row " NR " has " NF " columns, the header " n; bad = 1 }
+           END { if (NR < 50) { print "check: only " NR " rows"; bad = 1 } exit bad }' "$f" || exit 1
+}
+for sig in INT TERM KILL; do
+  out=$dir/$sig.csv
+  "$bdfcar" run "$scenario" --duration 10000 --out "$out" > "$dir/$sig.log" 2>&1 &
+  pid=$!
+  sleep 2
+  kill -s "$sig" "$pid"
+  wait "$pid"; status=$?
+  cat "$dir/$sig.log"
+  case $sig in
+    INT) [ "$status" -eq 130 ] || { echo "check: SIGINT gave exit $status, expected 130"; exit 1; }
+         grep -q "stopped by SIGINT" "$dir/$sig.log" || { echo "check: no summary after SIGINT"; exit 1; } ;;
+    TERM) [ "$status" -eq 143 ] || { echo "check: SIGTERM gave exit $status, expected 143"; exit 1; } ;;
+    KILL) [ "$status" -eq 137 ] || { echo "check: SIGKILL gave exit $status"; exit 1; } ;;
+  esac
+  complete_rows "$out"
+  echo "$sig: exit $status, $(wc -l < "$out") complete rows"
+done

@@ -1,0 +1,126 @@
+// A drive keeps every byte: reset, rewind and a divergence start a new
+// telemetry segment in the same file (a column), never a truncation; the
+// recording holds them as events and replays to the same telemetry; a
+// recording refuses to replay against other data.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "session/drive_session.h"
+
+using namespace bdfcar;
+
+namespace {
+
+std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("bdfcar_session_" + name)).string();
+}
+std::string readFile(const std::string& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream s(text);
+  for (std::string l; std::getline(s, l);) out.push_back(l);
+  return out;
+}
+scenario::DriverInput personAt(int i) {
+  const double t = 0.01 * i;
+  return {0.3 * std::sin(2.0 * t), t < 1.0 ? 0.5 : 0.0, 0.0};
+}
+
+// 100 ticks, reset, 60 ticks, rewind, 40 ticks.
+void driveWithResetAndRewind(app::DriveSession& d) {
+  for (int i = 0; i < 100; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  d.restart();
+  for (int i = 0; i < 60; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  ASSERT_TRUE(d.rewind());
+  for (int i = 60; i < 100; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+}
+
+}  // namespace
+
+TEST(DriveSession, ResetAndRewindStartSegmentsAndKeepEveryRow) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  const std::string csv = temp("segments.csv"), rec = temp("segments.rec");
+  {
+    app::SessionOptions o;
+    o.telemetryPath = csv;
+    o.recordPath = rec;
+    o.rewindable = true;
+    app::DriveSession d(spec, o);
+    driveWithResetAndRewind(d);
+    EXPECT_EQ(d.segment(), 2);
+    d.closeOutputs();
+  }
+  const std::vector<std::string> rows = lines(readFile(csv));
+  // Header, the start, one row per tick, and the first row of each new segment.
+  ASSERT_EQ(rows.size(), 1u + 1u + 200u + 2u);
+  std::set<std::string> segments;
+  for (size_t i = 1; i < rows.size(); ++i) segments.insert(rows[i].substr(rows[i].rfind(',') + 1));
+  EXPECT_EQ(segments, (std::set<std::string>{"0", "1", "2"}));
+  EXPECT_EQ(rows[0].substr(rows[0].rfind(',') + 1), "segment");
+  // The recording: 200 inputs with the reset and the rewind between them.
+  const app::Recording r = app::readRecording(rec);
+  EXPECT_EQ(r.inputCount(), 200);
+  ASSERT_EQ(r.entries.size(), 202u);
+  EXPECT_EQ(r.entries[100].kind, app::RecordedTick::Kind::Reset);
+  EXPECT_EQ(r.entries[161].kind, app::RecordedTick::Kind::Rewind);
+  EXPECT_EQ(r.vehicleHash, app::fileContentHash(spec.vehicleFile));
+  EXPECT_TRUE(app::replayMismatch(r, spec).empty());
+  // Replayed, it gives the very same telemetry.
+  const std::string csv2 = temp("segments_replay.csv");
+  {
+    app::SessionOptions o;
+    o.telemetryPath = csv2;
+    o.rewindable = true;
+    app::DriveSession d(spec, o);
+    for (const app::RecordedTick& e : r.entries) ASSERT_TRUE(d.replay(e));
+    d.closeOutputs();
+  }
+  EXPECT_EQ(readFile(csv), readFile(csv2));
+}
+
+TEST(DriveSession, StartingAndStoppingARecordingKeepsTheFormerOne) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  const std::string first = temp("first.rec"), second = temp("second.rec");
+  app::SessionOptions o;
+  o.recordPath = first;
+  app::DriveSession d(spec, o);
+  for (int i = 0; i < 50; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  d.startRecording(second);  // F9 with a recording running: the first is closed, whole
+  for (int i = 0; i < 30; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  EXPECT_EQ(d.stopRecording(), 30);
+  EXPECT_FALSE(d.recording());
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  EXPECT_EQ(app::readRecording(first).inputCount(), 50);
+  EXPECT_EQ(app::readRecording(second).inputCount(), 30);
+}
+
+TEST(DriveSession, ARecordingRefusesToReplayAgainstAnotherVehicleOrTick) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  const std::string rec = temp("mismatch.rec");
+  {
+    app::SessionOptions o;
+    o.recordPath = rec;
+    app::DriveSession d(spec, o);
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+    d.closeOutputs();
+  }
+  const app::Recording r = app::readRecording(rec);
+  scenario::ScenarioSpec other = spec;
+  other.vehicleFile = asset("vehicles/paper.toml");
+  EXPECT_NE(app::replayMismatch(r, other).find("recorded with the vehicle"), std::string::npos);
+  other = spec;
+  other.tick = 0.02;
+  EXPECT_NE(app::replayMismatch(r, other).find("tick"), std::string::npos);
+  other = spec;
+  other.integrator.step = 0.005;  // another step replays the same drive
+  EXPECT_TRUE(app::replayMismatch(r, other).empty());
+}
