@@ -16,18 +16,7 @@ all_targets=(fuzz_vehicle fuzz_scenario fuzz_terrain fuzz_road fuzz_obj fuzz_map
 
 # The main packages, then clang and libFuzzer (a separate list).
 "$root/scripts/install-deps.sh"
-mapfile -t wanted < <(grep -v -E '^\s*(#|$)' "$root/scripts/packages-fuzz.txt")
-missing=()
-for p in "${wanted[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+"$root/scripts/install-deps.sh" "$root/scripts/packages-fuzz.txt"
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \

@@ -12,18 +12,15 @@
 
 #include "session/drive_session.h"
 
+#include "test_files.h"
+
 using namespace bdfcar;
 
 namespace {
 
-std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
-std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("bdfcar_session_" + name)).string();
-}
-std::string readFile(const std::string& p) {
-  std::ifstream f(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
+using test::asset;
+using test::readFile;
+std::string temp(const std::string& name) { return test::tempFile("session", name); }
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
   std::istringstream s(text);

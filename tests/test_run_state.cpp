@@ -12,18 +12,15 @@
 #include "scenario/run.h"
 #include "scenario/simulation.h"
 
+#include "test_files.h"
+
 using namespace bdfcar;
 
 namespace {
 
-std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
-std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("bdfcar_runstate_" + name)).string();
-}
-std::string readFile(const std::string& p) {
-  std::ifstream f(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
+using test::asset;
+using test::readFile;
+std::string temp(const std::string& name) { return test::tempFile("runstate", name); }
 
 // A person's input at tick i: weaving, throttle, then brakes.
 scenario::DriverInput personAt(int i) {
