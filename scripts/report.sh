@@ -156,7 +156,22 @@ bench_table() {
 } >> "$out"
 
 {
-  echo "## 10. Soak: an hour of driving"
+  echo "## 10. Sanitizers and fuzzing"
+  echo
+  echo "The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (\`bash scripts/sanitize.sh\`,"
+  echo "its own build folder) and libFuzzer over the file loaders (\`bash scripts/fuzz.sh\`); both are long"
+  echo "studies, not part of CI. The latest sanitizer run on this machine (its summary, if it was run):"
+  echo
+  echo '```'
+  cat "$root/build-asan/sanitize-summary.txt" 2> /dev/null || echo "(not run on this machine: bash scripts/sanitize.sh)"
+  echo '```'
+  echo
+  echo "Fuzzing: executions per target and findings in docs/sanitizers-and-fuzzing.md."
+  echo
+} >> "$out"
+
+{
+  echo "## 11. Soak: an hour of driving"
   echo
   echo "One simulated hour on the flat road with seeded, bounded random inputs, and one with the steering"
   echo "flipped full left / full right every tick at up to 80 km/h, replayed as \`drive --replay --batch\`"

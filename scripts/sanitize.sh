@@ -34,5 +34,8 @@ rc=${PIPESTATUS[0]}
 set -e
 end=$(date +%s)
 summary=$(grep -E '^[0-9]+% tests passed' "$build/sanitize-ctest.log" | tail -1)
-echo "sanitize: ${summary:-no ctest summary}; build $((built - start)) s, tests $((end - built)) s (ASan+UBSan, $build)"
+skipped=$(grep -cE '^\s+[0-9]+ - .*\(Skipped\)' "$build/sanitize-ctest.log" || true)
+line="sanitize: ${summary:-no ctest summary} ($skipped skipped); build $((built - start)) s, tests $((end - built)) s (ASan+UBSan+float-cast-overflow, -O1, $(date -u +%F))"
+echo "$line"
+echo "$line" > "$build/sanitize-summary.txt"  # read by scripts/report.sh
 exit "$rc"
