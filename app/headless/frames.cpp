@@ -39,7 +39,11 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   std::unique_ptr<render::PngQueue> pngs;
   if (!opt.outDir.empty()) pngs = std::make_unique<render::PngQueue>();
   std::unique_ptr<render::VideoPipe> video;
-  if (!opt.video.empty()) video = std::make_unique<render::VideoPipe>(opt.video, opt.width, opt.height);
+  if (!opt.video.empty()) {
+    render::VideoOptions vo;
+    vo.fps = opt.fps;  // played at the rate it was rendered at: its duration is the manoeuvre's
+    video = std::make_unique<render::VideoPipe>(opt.video, opt.width, opt.height, vo);
+  }
 
   const double frameDt = 1.0 / opt.fps;
   const auto wall0 = Clock::now();
