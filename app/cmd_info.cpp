@@ -3,14 +3,17 @@
 // TERRAIN.toml`: what a terrain file builds (both check the file fully).
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "cli_errors.h"
 #include "commands.h"
 #include "config/toml_reader.h"
 #include "multibody/model.h"
 #include "terrain/terrain_file.h"
-#include "vehicle/vehicle_builder.h"
+#include "scenario/scenario_spec.h"
+#include "vehicle/kinematic_model.h"
 #include "vehicle/motion_ratio.h"
+#include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_file.h"
 
 namespace bdfcar::app {
@@ -47,8 +50,24 @@ bool isTerrainFile(const std::string& path) {
   return (root.has("kind") || root.has("friction")) && !root.has("vehicle");
 }
 
-int runInfo(const std::string& path) {
-  if (isTerrainFile(path)) return runTerrainInfo(path);
+// The kinematic model derived from the linkage: its bodies, tables and the
+// check of the tables against the linkage.
+void printKinematic(const vehicle::Vehicle& linkage) {
+  const vehicle::KinematicDerivation k = vehicle::deriveKinematic(linkage);
+  const mb::Model& m = k.vehicle.model;
+  std::printf("\nderived: the kinematic model (--fidelity kinematic)\n");
+  std::printf("  %-18s %9s  %-26s %s\n", "body", "mass kg", "joint", "parent");
+  for (const mb::Body& b : m.bodies)
+    std::printf("  %-18s %9.3f  %-26s %s\n", b.name.c_str(), b.mass, mb::jointTypeName(b.joint),
+                b.parent < 0 ? "(ground)" : m.bodies[b.parent].name.c_str());
+  std::printf("%s", vehicle::describeKinematic(k).c_str());
+}
+
+int runInfo(const std::string& path, const std::string& fidelity) {
+  if (isTerrainFile(path)) {
+    if (!fidelity.empty()) throw std::runtime_error("--fidelity applies to a vehicle file, not to the terrain file " + path);
+    return runTerrainInfo(path);
+  }
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path));
   const mb::Model& m = v.model;
   std::printf("%s (%s)\n", v.spec.name.c_str(), path.c_str());
@@ -85,6 +104,9 @@ int runInfo(const std::string& path) {
   std::printf("degrees of freedom: %d (+%d wheel spin); with the rack prescribed: %d\n", coords - cuts, spin,
               coords - cuts - (m.nc - cuts));
   std::printf("total mass: %.3f kg\n", m.totalMass());
+  vehicle::Fidelity f = vehicle::Fidelity::Linkage;
+  if (!fidelity.empty()) scenario::parseFidelity(fidelity, f);
+  if (f == vehicle::Fidelity::Kinematic) printKinematic(v);
   return 0;
 }
 
@@ -97,7 +119,11 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("file", *path, "Vehicle file (assets/vehicles/*.toml) or terrain file (assets/terrain/*.toml)")
       ->required()
       ->check(CLI::ExistingFile);
-  commands.push_back({cmd, [path] { return reportErrors([&] { return runInfo(*path); }); }});
+  auto fidelity = std::make_shared<std::string>();
+  cmd->add_option("--fidelity", *fidelity,
+                  "Also derive this model from the vehicle and print it with its check against the linkage")
+      ->check(CLI::IsMember({"linkage", "kinematic"}));
+  commands.push_back({cmd, [path, fidelity] { return reportErrors([&] { return runInfo(*path, *fidelity); }); }});
 }
 
 }  // namespace bdfcar::app

@@ -15,6 +15,9 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--newton", ov.newton, "Newton iterations per step (0 = iterate to tolerance)")->check(CLI::Range(0, 50));
   cmd.add_option("--jacobian-every", ov.jacobianEvery, "Jacobian every N steps (0 = first step only)")
       ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--fidelity", ov.fidelity,
+                 "Suspension model: linkage (the vehicle file's) or kinematic (derived from it at load time)")
+      ->check(CLI::IsMember({"linkage", "kinematic"}));
   cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
   cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
   cmd.add_flag("--as-published", ov.asPublished,
@@ -37,6 +40,7 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.jacobianEvery) bdf.jacobianEvery = *ov.jacobianEvery;
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
+  if (ov.fidelity) scenario::parseFidelity(*ov.fidelity, spec.fidelity.suspension);
   if (ov.settle) spec.settleTime = *ov.settle;
   if (ov.asPublished) bdf.refreshWhenNotContracting = false;
   if (scenario::stepsPerTick(spec.tick, it.step) == 0) {

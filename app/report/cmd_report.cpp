@@ -28,17 +28,6 @@ struct ReportArgs {
   int repeats = 5;
 };
 
-void writePlot(const std::string& dataPath, const std::string& png, const std::string& script) {
-  std::ofstream g(png + ".gp");
-  g << "set datafile separator ','\nset terminal pngcairo size 1200,800 font ',11'\nset output '" << png << "'\n"
-    << "set grid\nset key outside below\n" << script;
-  g.close();
-  if (std::system(("gnuplot '" + png + ".gp' > /dev/null 2>&1").c_str()) != 0)
-    std::fprintf(stderr, "note: gnuplot could not draw %s\n", png.c_str());
-  fs::remove(png + ".gp");
-  (void)dataPath;
-}
-
 void referenceSection(std::ostream& md, const ReportArgs& a, const fs::path& imageDir) {
   const scenario::ScenarioSpec sedan = scenarioWith("jturn.toml", "sedan.toml");
   const std::vector<double> refYaw = csvColumn(a.reference, "yawrate_radps"), refAy = csvColumn(a.reference, "ay_mps2"),
@@ -286,6 +275,8 @@ int runReport(const ReportArgs& a) {
   hardCasesSection(md, a.repeats);
   std::printf("report: speed...\n");
   speedSection(md, a);
+  std::printf("report: fidelity ladder...\n");
+  fidelitySection(md, a.repeats, imageDir.string());
   std::ofstream f(out);
   if (!f) throw std::runtime_error(out.string() + ": cannot write");
   f << md.str();

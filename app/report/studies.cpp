@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cstdio>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -136,6 +138,17 @@ std::string divergedCell(const scenario::RunResult& r) {
 
 void command(std::ostream& md, const std::string& args) {
   md << "Command (one run): `bdfcar run " << args << " --out run.csv`\n\n";
+}
+
+void writePlot(const std::string& dataPath, const std::string& png, const std::string& script) {
+  std::ofstream g(png + ".gp");
+  g << "set datafile separator ','\nset terminal pngcairo size 1200,800 font ',11'\nset output '" << png << "'\n"
+    << "set grid\nset key outside below\n" << script;
+  g.close();
+  if (std::system(("gnuplot '" + png + ".gp' > /dev/null 2>&1").c_str()) != 0)
+    std::fprintf(stderr, "note: gnuplot could not draw %s\n", png.c_str());
+  std::filesystem::remove(png + ".gp");
+  (void)dataPath;
 }
 
 }  // namespace bdfcar::app

@@ -52,6 +52,14 @@ std::string divergedCell(const scenario::RunResult& r);
 // The command line that reproduces one run of a section.
 void command(std::ostream& md, const std::string& args);
 
+// A PNG drawn by gnuplot from a CSV (script: the plot commands after the
+// terminal, grid and key settings); a note on stderr when gnuplot fails.
+void writePlot(const std::string& dataPath, const std::string& png, const std::string& script);
+
+// Section of RESULTS.md: the fidelity ladder, each rung against the linkage
+// converged at 1 ms on smooth and hard manoeuvres (images under imageDir).
+void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir);
+
 // Section of RESULTS.md: the default Newton policy against the paper's on
 // hard cases (rough road, curb, jump, large steps): cost and error.
 void hardCasesSection(std::ostream& md, int repeats);

@@ -492,9 +492,18 @@ void checkUtf8(const std::string& text, const std::string& path) {
   for (std::size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c == '\n') ++line;
-    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-    bool ok = n > 0 && i + n <= text.size() && !(n == 2 && c < 0xc2);
-    for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    // RFC 3629: lead bytes C2-F4; the second byte's range excludes overlong
+    // forms, surrogates (ED A0-BF) and code points above U+10FFFF (F4 90-,
+    // F5-FF): toml11 decodes F6 9A 91 A5 past its buffer too (fuzz finding).
+    const std::size_t n = c < 0x80 ? 1 : (c >= 0xc2 && c <= 0xdf) ? 2 : (c >= 0xe0 && c <= 0xef) ? 3 : (c >= 0xf0 && c <= 0xf4) ? 4 : 0;
+    bool ok = n > 0 && i + n <= text.size();
+    if (ok && n > 1) {
+      const auto c1 = static_cast<unsigned char>(text[i + 1]);
+      const unsigned char lo = c == 0xe0 ? 0xa0 : c == 0xf0 ? 0x90 : 0x80;
+      const unsigned char hi = c == 0xed ? 0x9f : c == 0xf4 ? 0x8f : 0xbf;
+      ok = c1 >= lo && c1 <= hi;
+    }
+    for (std::size_t k = 2; ok && k < n; ++k) ok = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
     if (!ok) throw ConfigError(path + ":" + std::to_string(line) + ": not UTF-8 text (byte " + std::to_string(c) +
                                " at offset " + std::to_string(i) + "): a TOML file must be UTF-8");
     i += n;

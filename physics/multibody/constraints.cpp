@@ -66,9 +66,10 @@ void evaluate(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorX
       case CutJointType::Driver: {
         const Body& b = model.bodies[c.drivenBody];
         const SignalValue& s = d.driverTargets[c.driverSlot];
-        d.phi(c.row) = q(b.qIndex) - s.value;
-        if (withVel) d.phiDot(c.row) = (*v)(b.vIndex) - s.rate;
-        if (withAcc) d.phiDDot(c.row) = (*a)(b.vIndex) - s.accel;
+        const int k = c.drivenCoordinate;
+        d.phi(c.row) = q(b.qIndex + k) - s.value;
+        if (withVel) d.phiDot(c.row) = (*v)(b.vIndex + k) - s.rate;
+        if (withAcc) d.phiDDot(c.row) = (*a)(b.vIndex + k) - s.accel;
         break;
       }
     }
@@ -123,7 +124,7 @@ void applyConstraintWrenches(const Model& model, const Eigen::VectorXd& lambda, 
 
 void addDriverReactions(const Model& model, const Eigen::VectorXd& lambda, Data& d) {
   for (const CutJoint& c : model.cutJoints)
-    if (c.type == CutJointType::Driver) d.tau(model.bodies[c.drivenBody].vIndex) += lambda(c.row);
+    if (c.type == CutJointType::Driver) d.tau(model.bodies[c.drivenBody].vIndex + c.drivenCoordinate) += lambda(c.row);
 }
 
 void constraintJacobian(const Model& model, const Data& d, Eigen::MatrixXd& J) {
@@ -148,7 +149,7 @@ void constraintJacobian(const Model& model, const Data& d, Eigen::MatrixXd& J) {
         break;
       }
       case CutJointType::Driver:
-        J(c.row, model.bodies[c.drivenBody].vIndex) = 1.0;
+        J(c.row, model.bodies[c.drivenBody].vIndex + c.drivenCoordinate) = 1.0;
         break;
     }
   }

@@ -3,6 +3,7 @@
 // by makeData(); evaluating a model never allocates afterwards.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "multibody/model.h"
@@ -20,9 +21,15 @@ struct Data {
   std::vector<Vec3> p;            // (nbody) body origin in world
   Eigen::Matrix<double, 6, Eigen::Dynamic> S;  // (6 x nv) joint motion subspaces, body coordinates
 
+  // Tabulated joints (one entry per Model::tables): the table at the joint
+  // coordinates, and d S_k / d c_l of the subspace columns (index 2 k + l).
+  std::vector<SplineGrid::Sample> tableSamples;
+  std::vector<std::array<Vec6, 4>> tableSubspaceDerivatives;
+
   // --- computed by updateVelocities (v) ---
   std::vector<Vec6> vel;          // (nbody) spatial velocity (v; w), body coordinates
   std::vector<Vec6> bias;         // (nbody) velocity-product acceleration c_J + v x S qdot
+  std::vector<std::array<double, 2>> tableRates;  // (ntables) joint coordinate rates of the tabulated joints
 
   // --- computed by updateAccelerations (a) ---
   std::vector<Vec6> acc;          // (nbody) spatial acceleration, body coordinates

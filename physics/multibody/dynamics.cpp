@@ -18,6 +18,20 @@ void applyGravity(const Model& model, Data& d) {
 void applySprings(const Model& model, Data& d) {
   for (size_t k = 0; k < model.springs.size(); ++k) {
     const SpringDamper& s = model.springs[k];
+    if (s.tableBody >= 0) {
+      // Length from the joint table; the force does virtual work F dL on the joint coordinates.
+      const Body& b = model.bodies[s.tableBody];
+      const SplineGrid::Sample& t = d.tableSamples[b.table];
+      const auto& rate = d.tableRates[b.table];
+      const int c = s.tableComponent;
+      double Ldot = 0;
+      for (int j = 0; j < b.nv; ++j) Ldot += t.grad[c][j] * rate[j];
+      const double f = s.force(t.f[c], Ldot);
+      d.springLength[k] = t.f[c];
+      d.springForce[k] = f;
+      for (int j = 0; j < b.nv; ++j) d.jointForce(b.vIndex + j) += f * t.grad[c][j];
+      continue;
+    }
     const Vec3 xa = pointPosition(d, s.bodyA, s.pointA);
     const Vec3 xb = pointPosition(d, s.bodyB, s.pointB);
     const Vec3 dvec = xa - xb;

@@ -38,6 +38,11 @@ Vec3 relativeRotation(const double* q0, const double* q) {
 
 void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj) {
   switch (type) {
+    case JointType::Tabulated1:
+    case JointType::Tabulated2:  // from the joint's table (kinematics.cpp); identity here
+      Rj.setIdentity();
+      dj.setZero();
+      break;
     case JointType::Revolute:
       Rj = rotZ(q[0]);
       dj.setZero();
@@ -67,6 +72,10 @@ void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj) {
 
 void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
   switch (type) {
+    case JointType::Tabulated1:
+    case JointType::Tabulated2:  // from the joint's table, written by updatePositions
+      Sj.setZero(6, jointNv(type));
+      break;
     case JointType::Revolute:
       Sj.resize(6, 1);
       Sj << 0, 0, 0, 0, 0, 1;
@@ -116,10 +125,12 @@ void jointRetract(JointType type, const double* q, const double* dq, double* out
   switch (type) {
     case JointType::Revolute:
     case JointType::Prismatic:
+    case JointType::Tabulated1:
       out[0] = q[0] + dq[0];
       break;
     case JointType::Cylindrical:
     case JointType::Universal:
+    case JointType::Tabulated2:
       out[0] = q[0] + dq[0];
       out[1] = q[1] + dq[1];
       break;
@@ -142,10 +153,12 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
   switch (type) {
     case JointType::Revolute:
     case JointType::Prismatic:
+    case JointType::Tabulated1:
       out[0] = q[0] - base[0];
       break;
     case JointType::Cylindrical:
     case JointType::Universal:
+    case JointType::Tabulated2:
       out[0] = q[0] - base[0];
       out[1] = q[1] - base[1];
       break;
@@ -172,10 +185,12 @@ void jointLocalRate(JointType type, const double* delta, const double* v, double
   switch (type) {
     case JointType::Revolute:
     case JointType::Prismatic:
+    case JointType::Tabulated1:
       out[0] = v[0];
       break;
     case JointType::Cylindrical:
     case JointType::Universal:
+    case JointType::Tabulated2:
       out[0] = v[0];
       out[1] = v[1];
       break;

@@ -38,6 +38,51 @@ Vec6 subspaceTimes(const Data& d, const Body& b, const Eigen::VectorXd& x) {
   return out;
 }
 
+bool isTabulated(const Body& b) {
+  return b.joint == JointType::Tabulated1 || b.joint == JointType::Tabulated2;
+}
+
+// A tabulated joint at coordinates c: the body's rotation R and origin t in
+// the parent body frame, its subspace columns (body coordinates) and their
+// derivatives with respect to c. With the angles a = (psi, phi, theta) of
+// R = rest Rz(psi) Rx(phi) Ry(theta), the body-frame angular velocity is
+// E(phi, theta) a_dot; d R / d c_l = R [w_l]x turns d(R^T dt/dc_k)/dc_l into
+// -w_l x (R^T dt/dc_k) + R^T d2t/dc_k dc_l.
+void tabulatedPose(const Model& model, const Body& b, const double* c, Data& d, Mat3& R, Vec3& t) {
+  const JointTable& table = model.tables[b.table];
+  SplineGrid::Sample& s = d.tableSamples[b.table];
+  table.grid.eval(c[0], b.nv > 1 ? c[1] : 0.0, s);
+  const double psi = s.f[3], phi = s.f[4], theta = s.f[5];
+  R.noalias() = table.rest * (rotZ(psi) * rotX(phi) * rotY(theta));
+  t = Vec3(s.f[0], s.f[1], s.f[2]);
+  const double sf = std::sin(phi), cf = std::cos(phi), st = std::sin(theta), ct = std::cos(theta);
+  Mat3 E, Ephi = Mat3::Zero(), Etheta = Mat3::Zero();
+  E << -st * cf, ct, 0, sf, 0, 1, ct * cf, st, 0;
+  Ephi.col(0) << st * sf, cf, -ct * sf;
+  Etheta.col(0) << -ct * cf, 0, -st * cf;
+  Etheta.col(1) << -st, 0, ct;
+  const Mat3 Rt = R.transpose();
+  std::array<Vec3, 2> w, lin;
+  for (int k = 0; k < b.nv; ++k) {
+    const Vec3 da(s.grad[3][k], s.grad[4][k], s.grad[5][k]);
+    w[k] = E * da;
+    lin[k] = Rt * Vec3(s.grad[0][k], s.grad[1][k], s.grad[2][k]);
+    d.S.col(b.vIndex + k) << lin[k], w[k];
+  }
+  auto hessIndex = [](int k, int l) { return k + l; };  // (0,0) -> xx, (0,1) -> xy, (1,1) -> yy
+  for (int k = 0; k < b.nv; ++k) {
+    const Vec3 da(s.grad[3][k], s.grad[4][k], s.grad[5][k]);
+    for (int l = 0; l < b.nv; ++l) {
+      const int h = hessIndex(k, l);
+      const Vec3 d2a(s.hess[3][h], s.hess[4][h], s.hess[5][h]);
+      const Vec3 d2t(s.hess[0][h], s.hess[1][h], s.hess[2][h]);
+      Vec6& out = d.tableSubspaceDerivatives[b.table][2 * k + l];
+      out.head<3>() = -w[l].cross(lin[k]) + Rt * d2t;
+      out.tail<3>() = (Ephi * s.grad[4][l] + Etheta * s.grad[5][l]) * da + E * d2a;
+    }
+  }
+}
+
 }  // namespace
 
 void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
@@ -68,6 +113,8 @@ void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
         R = throughJointFrames(b, quatToMatrix(qi + 3));
         t += b.inParent.axes * Vec3(qi[0], qi[1], qi[2]);
         break;
+      case JointType::Tabulated1:
+      case JointType::Tabulated2: tabulatedPose(model, b, qi, d, R, t); break;
     }
     t.noalias() -= R * b.inChild.origin;
     Transform& X = d.Xup[i];
@@ -95,6 +142,15 @@ void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen:
     d.bias[i] = crossMotion(d.vel[i], vJ);
     if (b.joint == JointType::Universal)
       d.bias[i] += jointToBody(b, jointSubspaceRateBias(b.joint, q.data() + b.qIndex, v.data() + b.vIndex));
+    if (isTabulated(b)) {
+      // Apparent rate of the subspace: sum over k, l of dS_k/dc_l c_dot_l c_dot_k.
+      const auto& dS = d.tableSubspaceDerivatives[b.table];
+      auto& rates = d.tableRates[b.table];
+      for (int k = 0; k < b.nv; ++k) {
+        rates[k] = v(b.vIndex + k);
+        for (int l = 0; l < b.nv; ++l) d.bias[i] += dS[2 * k + l] * (v(b.vIndex + k) * v(b.vIndex + l));
+      }
+    }
   }
 }
 

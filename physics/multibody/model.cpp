@@ -12,9 +12,11 @@ namespace bdfcar::mb {
 int jointNq(JointType t) {
   switch (t) {
     case JointType::Revolute:
-    case JointType::Prismatic: return 1;
+    case JointType::Prismatic:
+    case JointType::Tabulated1: return 1;
     case JointType::Cylindrical:
-    case JointType::Universal: return 2;
+    case JointType::Universal:
+    case JointType::Tabulated2: return 2;
     case JointType::Spherical: return 4;
     case JointType::Free: return 7;
   }
@@ -24,9 +26,11 @@ int jointNq(JointType t) {
 int jointNv(JointType t) {
   switch (t) {
     case JointType::Revolute:
-    case JointType::Prismatic: return 1;
+    case JointType::Prismatic:
+    case JointType::Tabulated1: return 1;
     case JointType::Cylindrical:
-    case JointType::Universal: return 2;
+    case JointType::Universal:
+    case JointType::Tabulated2: return 2;
     case JointType::Spherical: return 3;
     case JointType::Free: return 6;
   }
@@ -41,6 +45,8 @@ const char* jointTypeName(JointType t) {
     case JointType::Universal: return "universal";
     case JointType::Spherical: return "spherical";
     case JointType::Free: return "free";
+    case JointType::Tabulated1: return "tabulated (1 coordinate)";
+    case JointType::Tabulated2: return "tabulated (2 coordinates)";
   }
   return "?";
 }
@@ -118,6 +124,16 @@ int ModelBuilder::addBody(Body body) {
   checkAxes(body.inChild.axes, what + " joint '" + body.jointName + "' child frame");
   if (body.joint == JointType::Free && body.parent != kGround)
     throw ModelError(what + ": a free joint must connect the body to the ground");
+  if (body.joint == JointType::Tabulated1 || body.joint == JointType::Tabulated2) {
+    if (body.table < 0 || body.table >= static_cast<int>(model_.tables.size()))
+      throw ModelError(what + ": a tabulated joint needs a table added before it");
+    const int dims = model_.tables[body.table].grid.dimensions();
+    if (dims != (body.joint == JointType::Tabulated1 ? 1 : 2))
+      throw ModelError(what + ": the joint's table has " + std::to_string(dims) + " coordinate(s)");
+    if (!body.inParent.origin.isZero(0.0) || !body.inChild.origin.isZero(0.0) ||
+        !body.inParent.axes.isIdentity(0.0) || !body.inChild.axes.isIdentity(0.0))
+      throw ModelError(what + ": a tabulated joint's frames are the body frames");
+  }
   if (!(body.rotorInertia >= 0) || !std::isfinite(body.rotorInertia))
     throw ModelError(what + ": rotor inertia must be non-negative");
   const Vec3 axis = body.rotorAxis.normalized();
@@ -137,8 +153,11 @@ int ModelBuilder::addCutJoint(CutJoint cut) {
     checkBody(cut.drivenBody, "driven body");
     if (cut.drivenBody == kGround) throw ModelError(what + ": the driven body must not be the ground");
     const JointType t = model_.bodies[cut.drivenBody].joint;
-    if (t != JointType::Revolute && t != JointType::Prismatic)
-      throw ModelError(what + ": a driver needs a revolute or prismatic joint");
+    const bool scalar = t == JointType::Revolute || t == JointType::Prismatic || t == JointType::Tabulated1;
+    if (!scalar && t != JointType::Tabulated2)
+      throw ModelError(what + ": a driver needs a revolute, prismatic or tabulated joint");
+    if (cut.drivenCoordinate < 0 || cut.drivenCoordinate >= jointNv(t))
+      throw ModelError(what + ": the driven joint has no coordinate " + std::to_string(cut.drivenCoordinate));
     cut.driverSlot = model_.nDrivers++;
   } else {
     checkBody(cut.bodyA, "body A");
@@ -163,7 +182,21 @@ void ModelBuilder::addSpring(SpringDamper s) {
       if (!(c->x[i] > c->x[i - 1]))
         throw ModelError("spring '" + s.name + "': curve x values must increase strictly");
   }
+  if (s.tableBody >= 0) {
+    if (s.tableBody >= nb || model_.bodies[s.tableBody].table < 0)
+      throw ModelError("spring '" + s.name + "': its length table belongs to a body without a tabulated joint");
+    const JointTable& t = model_.tables[model_.bodies[s.tableBody].table];
+    if (s.tableComponent < JointTable::kPoseComponents || s.tableComponent >= t.grid.components())
+      throw ModelError("spring '" + s.name + "': its length is not a component of the joint table");
+  }
   model_.springs.push_back(std::move(s));
+}
+
+int ModelBuilder::addTable(JointTable table) {
+  if (table.grid.components() < JointTable::kPoseComponents)
+    throw ModelError("joint table: needs the 6 pose components");
+  model_.tables.push_back(std::move(table));
+  return static_cast<int>(model_.tables.size()) - 1;
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "multibody/spatial.h"
+#include "multibody/spline_grid.h"
 
 namespace bdfcar::mb {
 
@@ -18,8 +19,11 @@ constexpr int kGround = -1;
 // z, prismatic along z, cylindrical about and along z, universal about x of
 // the parent joint frame then y of the child joint frame, spherical any
 // rotation about the joint point, free: the body frame relative to the parent
-// joint frame (position + rotation).
-enum class JointType { Revolute, Prismatic, Cylindrical, Universal, Spherical, Free };
+// joint frame (position + rotation). Tabulated1 / Tabulated2: the body frame
+// relative to the parent body frame is a tabulated function of one or two
+// coordinates (a JointTable; e.g. a wheel carrier moving with suspension
+// travel and rack travel as the linkage it stands for moves it).
+enum class JointType { Revolute, Prismatic, Cylindrical, Universal, Spherical, Free, Tabulated1, Tabulated2 };
 
 // Number of position coordinates (rotations stored as unit quaternions).
 int jointNq(JointType t);
@@ -31,6 +35,18 @@ const char* jointTypeName(JointType t);
 struct JointFrame {
   Vec3 origin = Vec3::Zero();
   Mat3 axes = Mat3::Identity();
+};
+
+// The pose of a tabulated joint's body frame in its parent body frame as a
+// function of the joint coordinates c: grid components 0-2 are the origin,
+// 3-5 the angles (psi, phi, theta) of R = rest Rz(psi) Rx(phi) Ry(theta)
+// (no gimbal lock short of phi = 90 deg: a wheel carrier never gets there).
+// Further components are lengths of tabulated spring-dampers (SpringDamper::
+// tableComponent). Both joint frames of a tabulated joint are the body frames.
+struct JointTable {
+  SplineGrid grid;
+  Mat3 rest = Mat3::Identity();
+  static constexpr int kPoseComponents = 6;
 };
 
 // A body and the tree joint that connects it to its parent.
@@ -61,6 +77,7 @@ struct Body {
   Mat3 rodrigues1 = Mat3::Zero(), rodrigues2 = Mat3::Zero();
   Vec3 axisInParent = Vec3::UnitZ();
   bool identityAxes = false;         // both joint frames have the body axes
+  int table = -1;                    // Tabulated1/2: index in Model::tables
 };
 
 // Cut-joint (closed-loop) constraint types.
@@ -76,7 +93,8 @@ struct CutJoint {
   int bodyA = kGround, bodyB = kGround;
   Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();  // in body frames (world if ground)
   double length = 0.0;       // Distance
-  int drivenBody = -1;       // Driver: body whose (scalar) tree joint is prescribed
+  int drivenBody = -1;       // Driver: body whose tree joint coordinate is prescribed
+  int drivenCoordinate = 0;  // Driver: which of that joint's coordinates (0 but for Tabulated2)
   int driverSlot = 0;        // Driver: index of the signal in Data::drivers
   // Filled by the builder:
   int row = 0, rows = 0;     // slice of the constraint vector
@@ -106,6 +124,11 @@ struct SpringDamper {
   double bumpStiffness = 0.0;    // N/m
   double reboundLength = 0.0;    // rebound stop engages when L > reboundLength (0 = none)
   double reboundStiffness = 0.0;
+  // Tabulated length (a reduced model): the length is component
+  // tableComponent of body tableBody's joint table, a function of that joint's
+  // coordinates, and the force acts on them as the generalised force
+  // F dL/dc (points unused). -1: a point-to-point element.
+  int tableBody = -1, tableComponent = -1;
   // Total force (+ = apart) at length L and rate dL/dt.
   double force(double length, double lengthRate) const;
 };
@@ -114,6 +137,7 @@ struct Model {
   std::vector<Body> bodies;          // topological order: parent index < own index
   std::vector<CutJoint> cutJoints;
   std::vector<SpringDamper> springs;
+  std::vector<JointTable> tables;    // of the Tabulated1/2 joints
   Vec3 gravity = Vec3(0, 0, -9.81);
   int nq = 0, nv = 0, nc = 0;        // positions, velocities (= relative coordinates), constraint rows
   // Joint motion subspaces in body coordinates (6 x nv); constant except for
@@ -132,6 +156,7 @@ class ModelBuilder {
   int addBody(Body body);
   int addCutJoint(CutJoint cut);
   void addSpring(SpringDamper s);
+  int addTable(JointTable table);    // index for Body::table
   void setGravity(const Vec3& g) { model_.gravity = g; }
   Model build();  // validates, assigns coordinate and row slices
 

@@ -118,6 +118,13 @@ CheckSpec readCheck(Table& t) {
 
 }  // namespace
 
+bool parseFidelity(const std::string& name, vehicle::Fidelity& out) {
+  if (name == "linkage") out = vehicle::Fidelity::Linkage;
+  else if (name == "kinematic") out = vehicle::Fidelity::Kinematic;
+  else return false;
+  return true;
+}
+
 int stepsPerTick(double tick, double step) {
   if (!(tick > 0) || !(step > 0)) return 0;
   const double n = std::round(tick / step);
@@ -149,6 +156,12 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
     }
     s.startHeading = st->number("heading", Dimension::Angle, kHeading, 0.0);
     st->finish();
+  }
+  if (auto f = root.optionalTable("fidelity")) {
+    const std::string susp = f->string("suspension", "linkage");
+    if (!parseFidelity(susp, s.fidelity.suspension))
+      f->fail("unknown suspension model '" + susp + "': expected linkage or kinematic", "suspension");
+    f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {
     IntegratorSpec& i = s.integrator;

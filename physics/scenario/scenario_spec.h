@@ -8,6 +8,7 @@
 
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
+#include "vehicle/vehicle_builder.h"
 
 namespace bdfcar::scenario {
 
@@ -63,6 +64,12 @@ struct CheckSpec {
   double maxWheelLift = 0.3;                // s, StaysOnFourWheels: longest time a wheel is off the ground
 };
 
+// What the scene needs of the vehicle model ([fidelity]): the rung of the
+// ladder the vehicle file is turned into (docs/DESIGN.md, "Fidelity").
+struct FidelitySpec {
+  vehicle::Fidelity suspension = vehicle::Fidelity::Linkage;
+};
+
 struct ScenarioSpec {
   std::string name, sourceFile;
   std::string vehicleFile, terrainFile;  // resolved paths; terrainFile empty = flat plane z = 0
@@ -75,6 +82,7 @@ struct ScenarioSpec {
   // path follower's decision): each tick runs tick / integrator.step steps.
   double tick = 0.01;          // s
   int raysPerWheel = 1;
+  FidelitySpec fidelity;
   IntegratorSpec integrator;
   SignalSpec steering, throttle, brake;
   SpeedControlSpec speedControl;
@@ -82,6 +90,9 @@ struct ScenarioSpec {
   PathFollowerSpec pathFollower;
   CheckSpec check;
 };
+
+// "linkage" or "kinematic"; false for anything else.
+bool parseFidelity(const std::string& name, vehicle::Fidelity& out);
 
 // Integration steps per driver tick; 0 when the step does not divide the tick.
 int stepsPerTick(double tick, double step);

@@ -8,6 +8,7 @@
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
 #include "multibody/kinematics.h"
+#include "multibody/model_error.h"
 #include "terrain/bullet/bullet_terrain.h"
 #include "terrain/terrain_file.h"
 #include "vehicle/motion_ratio.h"
@@ -69,6 +70,17 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile));
+  if (spec.fidelity.suspension == vehicle::Fidelity::Kinematic) {
+    vehicle::KinematicDerivation k = [&] {
+      try {
+        return vehicle::deriveKinematic(w->vehicle);
+      } catch (const mb::ModelError& e) {
+        throw mb::ModelError(spec.vehicleFile + ": " + e.what() + " (the scenario asks for [fidelity] suspension = kinematic)");
+      }
+    }();
+    w->vehicle = std::move(k.vehicle);
+    w->kinematicCheck = k.check;
+  }
   w->terrain = loadGround(spec);
   if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY);
   return w;
@@ -100,7 +112,9 @@ Simulation::Simulation(std::shared_ptr<const World> world)
   forces_ = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
   dae_ = std::make_unique<mb::MultibodyDae>(veh.model);
   dae_->addForceProvider(forces_.get());
-  dae_->setDriverSignal(veh.layout.rackDriverSlot, &rack_);
+  // Every driver of a vehicle model is the rack's: the rack itself and, in a
+  // kinematic model, the rack travel of each steered corner's table.
+  for (int slot = 0; slot < veh.model.nDrivers; ++slot) dae_->setDriverSignal(slot, &rack_);
   if (spec.speedControl.enabled)
     speed_.emplace(spec.speedControl.target, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki});
   if (spec.pathFollower.enabled) {

@@ -29,6 +29,7 @@
 #include "terrain/terrain.h"
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
+#include "vehicle/kinematic_model.h"
 #include "vehicle/vehicle_forces.h"
 #include "vehicle/vehicle_sample.h"
 
@@ -48,6 +49,8 @@ struct World {
   std::unique_ptr<const terrain::Terrain> terrain;  // Bullet shapes built here, once
   std::optional<Iso3888Course> course;
   int stepsPerTick = 1;                             // spec.tick / spec.integrator.step
+  // The derived model against the linkage, when the vehicle is not the linkage.
+  std::optional<vehicle::KinematicCheck> kinematicCheck;
 };
 
 // Loads the vehicle and terrain files and builds the world; throws on bad

@@ -13,10 +13,22 @@ namespace bdfcar::vehicle {
 using integ::Mat;
 using integ::Vec;
 
+namespace {
+
+// Coordinates a driver prescribes: the rack (and, in a kinematic model, the
+// rack travel of the steered corners' tables).
+void addDrivenCoordinates(const mb::Model& m, std::vector<int>& held) {
+  for (const mb::CutJoint& c : m.cutJoints)
+    if (c.type == mb::CutJointType::Driver) held.push_back(m.bodies[c.drivenBody].vIndex + c.drivenCoordinate);
+}
+
+}  // namespace
+
 std::vector<int> heldCoordinates(const Vehicle& v) {
   const mb::Body& ch = v.model.bodies[v.layout.chassis];
   // Free joint velocity order: linear (body x, y, z), angular (roll, pitch, yaw).
-  std::vector<int> held = {ch.vIndex + 0, ch.vIndex + 1, ch.vIndex + 5, v.layout.rackV};
+  std::vector<int> held = {ch.vIndex + 0, ch.vIndex + 1, ch.vIndex + 5};
+  addDrivenCoordinates(v.model, held);
   for (const WheelLayout& w : v.layout.wheels) held.push_back(w.spinV);
   std::sort(held.begin(), held.end());
   return held;
@@ -47,7 +59,7 @@ bool assemble(const Vehicle& v, integ::Dae& dae, double t, Vec& q, std::string& 
   std::vector<int> held;
   const mb::Body& ch = v.model.bodies[v.layout.chassis];
   for (int i = 0; i < ch.nv; ++i) held.push_back(ch.vIndex + i);
-  held.push_back(v.layout.rackV);
+  addDrivenCoordinates(v.model, held);
   std::sort(held.begin(), held.end());
   const std::vector<int> free = complement(n.nv, held), rows = loopRows(v.model);
   integ::Residual r;

@@ -96,7 +96,7 @@ double roadWheelAnglePerSteer(const Vehicle& v) {
   for (int k = 0; k < 2; ++k) {
     const double s = k == 0 ? steer : -steer;
     Eigen::VectorXd q = designPositions(v);
-    q(v.layout.rackQ) = v.layout.rackAxisSign * -v.spec.steering.rackTravelFull * s;
+    setRackTravel(v, q, v.layout.rackAxisSign * -v.spec.steering.rackTravelFull * s);
     std::string msg;
     if (!assemble(v, dae, 0, q, msg)) return 0;
     mb::updatePositions(m, q, d);

@@ -22,6 +22,8 @@ Mat3 jointAxes(const JointSpec& j) {
 
 }  // namespace
 
+const char* fidelityName(Fidelity f) { return f == Fidelity::Kinematic ? "kinematic" : "linkage"; }
+
 Vehicle buildVehicle(const VehicleSpec& spec) {
   Vehicle out;
   out.spec = spec;
@@ -157,6 +159,11 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
       if (m.bodies[k].parent == static_cast<int>(i)) add(m.bodies[k].inParent.origin);
   }
   return out;
+}
+
+void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x) {
+  for (const mb::CutJoint& c : v.model.cutJoints)
+    if (c.type == mb::CutJointType::Driver) q(v.model.bodies[c.drivenBody].qIndex + c.drivenCoordinate) = x;
 }
 
 Eigen::VectorXd designPositions(const Vehicle& v) {

@@ -35,8 +35,14 @@ struct VehicleLayout {
   int spinCoordinates = 0;
 };
 
+// The rungs of the fidelity ladder (docs/DESIGN.md): the linkage as the
+// vehicle file describes it, or models derived from it (kinematic_model.h).
+enum class Fidelity { Linkage, Kinematic };
+const char* fidelityName(Fidelity f);
+
 // A plain value: copies stay valid (the layout holds indices, no pointers).
 struct Vehicle {
+  Fidelity fidelity = Fidelity::Linkage;
   VehicleSpec spec;
   mb::Model model;
   VehicleLayout layout;
@@ -46,6 +52,10 @@ struct Vehicle {
 
 // Builds the model; throws mb::ModelError naming the offending element.
 Vehicle buildVehicle(const VehicleSpec& spec);
+
+// Sets the rack coordinate of q (and every coordinate a rack driver ties to
+// it: a kinematic model's steered corners) to x, m along the rack's axis.
+void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x);
 
 // Positions at design with the chassis frame at (0, 0, designHeight).
 Eigen::VectorXd designPositions(const Vehicle& v);

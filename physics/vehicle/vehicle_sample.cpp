@@ -61,8 +61,11 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     const Vec3 n = R.transpose() * d.R[v.layout.wheels[w].spindle].col(1);
     out.steerAngle[w] = std::atan2(-n.x(), n.y());
   }
+  // The rack's driver, and in a kinematic model the steered corners' rack
+  // travel drivers too: together they carry the rack force.
+  out.rackForce = 0;
   for (const mb::CutJoint& cj : m.cutJoints)
-    if (cj.type == mb::CutJointType::Driver) out.rackForce = v.layout.rackAxisSign * s.lambda(cj.row);
+    if (cj.type == mb::CutJointType::Driver) out.rackForce += v.layout.rackAxisSign * s.lambda(cj.row);
   return out;
 }
 

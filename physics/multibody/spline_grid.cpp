@@ -1,0 +1,157 @@
+#include "multibody/spline_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace bdfcar::mb {
+
+namespace {
+
+// Slopes at the nodes of the natural cubic spline through f (spacing h):
+// second derivatives M from the tridiagonal system (M = 0 at both ends), then
+// the spline's derivative at each node. A cubic Hermite patch with these
+// slopes is the spline itself.
+std::vector<double> naturalSplineSlopes(const std::vector<double>& f, double h) {
+  const int n = static_cast<int>(f.size());
+  std::vector<double> M(n, 0.0), c(n, 0.0), d(n, 0.0);
+  // Rows 1..n-2: M[i-1] + 4 M[i] + M[i+1] = 6 (f[i+1] - 2 f[i] + f[i-1]) / h^2 (Thomas algorithm).
+  for (int i = 1; i < n - 1; ++i) {
+    const double rhs = 6.0 * (f[i + 1] - 2.0 * f[i] + f[i - 1]) / (h * h);
+    const double denom = 4.0 - (i > 1 ? c[i - 1] : 0.0);
+    c[i] = 1.0 / denom;
+    d[i] = (rhs - (i > 1 ? d[i - 1] : 0.0)) / denom;
+  }
+  for (int i = n - 2; i >= 1; --i) M[i] = d[i] - c[i] * M[i + 1];
+  std::vector<double> slope(n);
+  for (int i = 0; i < n - 1; ++i) slope[i] = (f[i + 1] - f[i]) / h - h * (2.0 * M[i] + M[i + 1]) / 6.0;
+  slope[n - 1] = (f[n - 1] - f[n - 2]) / h + h * (M[n - 2] + 2.0 * M[n - 1]) / 6.0;
+  return slope;
+}
+
+// Cubic Hermite weights on one cell for the value, first and second
+// derivative: [node 0 value, node 0 slope, node 1 value, node 1 slope].
+struct HermiteWeights {
+  std::array<double, 4> w0, w1, w2;
+};
+
+HermiteWeights hermite(double u, double h) {
+  const double u2 = u * u, u3 = u2 * u;
+  HermiteWeights w;
+  w.w0 = {2 * u3 - 3 * u2 + 1, (u3 - 2 * u2 + u) * h, -2 * u3 + 3 * u2, (u3 - u2) * h};
+  w.w1 = {(6 * u2 - 6 * u) / h, 3 * u2 - 4 * u + 1, (-6 * u2 + 6 * u) / h, 3 * u2 - 2 * u};
+  w.w2 = {(12 * u - 6) / (h * h), (6 * u - 4) / h, (-12 * u + 6) / (h * h), (6 * u - 2) / h};
+  return w;
+}
+
+// Cell index and local coordinate of x, clamped to the grid; ex = distance outside.
+int locate(const GridAxis& a, double x, double& u, double& ex, bool& outside) {
+  const double xc = std::clamp(x, a.start, a.end());
+  ex = x - xc;
+  outside = ex != 0.0;
+  const int cell = std::clamp(static_cast<int>(std::floor((xc - a.start) / a.step)), 0, a.nodes - 2);
+  u = (xc - (a.start + cell * a.step)) / a.step;
+  return cell;
+}
+
+void checkAxis(const GridAxis& a, const char* name, bool mayBeSingle) {
+  const bool single = mayBeSingle && a.nodes == 1;
+  if (!single && (a.nodes < 3 || !(a.step > 0) || !std::isfinite(a.start) || !std::isfinite(a.step)))
+    throw std::invalid_argument(std::string("spline grid: axis ") + name +
+                                " needs at least 3 nodes, a finite start and a positive step");
+}
+
+}  // namespace
+
+SplineGrid::SplineGrid(const GridAxis& x, const GridAxis& y, const std::vector<std::vector<double>>& samples)
+    : x_(x), y_(y), components_(static_cast<int>(samples.size())), nodes_(x.nodes * y.nodes) {
+  checkAxis(x_, "x", false);
+  checkAxis(y_, "y", true);
+  if (components_ < 1 || components_ > kMaxComponents)
+    throw std::invalid_argument("spline grid: 1 to " + std::to_string(kMaxComponents) + " components");
+  data_.assign(static_cast<size_t>(components_) * nodes_ * 4, 0.0);
+  for (int c = 0; c < components_; ++c) {
+    const std::vector<double>& s = samples[c];
+    if (static_cast<int>(s.size()) != nodes_) throw std::invalid_argument("spline grid: wrong number of samples");
+    for (double v : s)
+      if (!std::isfinite(v)) throw std::invalid_argument("spline grid: a sample is not finite");
+    auto at = [&](int i, int j, int k) -> double& {
+      return data_[(static_cast<size_t>(c) * nodes_ + i + x_.nodes * j) * 4 + k];
+    };
+    // Values, then slopes along x (each row), along y (each column), and the
+    // cross derivative as the y-slopes of the x-slopes.
+    std::vector<double> line;
+    for (int j = 0; j < y_.nodes; ++j) {
+      line.assign(s.begin() + x_.nodes * j, s.begin() + x_.nodes * (j + 1));
+      const std::vector<double> fx = naturalSplineSlopes(line, x_.step);
+      for (int i = 0; i < x_.nodes; ++i) {
+        at(i, j, 0) = line[i];
+        at(i, j, 1) = fx[i];
+      }
+    }
+    if (y_.nodes == 1) continue;
+    for (int i = 0; i < x_.nodes; ++i) {
+      for (int k : {0, 1}) {
+        line.resize(y_.nodes);
+        for (int j = 0; j < y_.nodes; ++j) line[j] = at(i, j, k);
+        const std::vector<double> fy = naturalSplineSlopes(line, y_.step);
+        for (int j = 0; j < y_.nodes; ++j) at(i, j, k == 0 ? 2 : 3) = fy[j];
+      }
+    }
+  }
+}
+
+void SplineGrid::eval(double x, double y, Sample& out) const {
+  double ux, ex, uy = 0, ey = 0;
+  bool outX, outY = false;
+  const int i = locate(x_, x, ux, ex, outX);
+  const HermiteWeights wx = hermite(ux, x_.step);
+  if (y_.nodes == 1) {
+    for (int c = 0; c < components_; ++c) {
+      const double* a = node(c, i);
+      const double* b = node(c, i + 1);
+      const double g = wx.w0[0] * a[0] + wx.w0[1] * a[1] + wx.w0[2] * b[0] + wx.w0[3] * b[1];
+      const double gx = wx.w1[0] * a[0] + wx.w1[1] * a[1] + wx.w1[2] * b[0] + wx.w1[3] * b[1];
+      const double gxx = wx.w2[0] * a[0] + wx.w2[1] * a[1] + wx.w2[2] * b[0] + wx.w2[3] * b[1];
+      out.f[c] = g + ex * gx;
+      out.grad[c] = {gx, 0.0};
+      out.hess[c] = {outX ? 0.0 : gxx, 0.0, 0.0};
+    }
+    out.outside = outX;
+    return;
+  }
+  const int j = locate(y_, y, uy, ey, outY);
+  const HermiteWeights wy = hermite(uy, y_.step);
+  // Node (a, b) of the cell, a, b in {0, 1}: its x weights use entries 2a, 2a+1.
+  for (int c = 0; c < components_; ++c) {
+    double g = 0, gx = 0, gy = 0, gxx = 0, gxy = 0, gyy = 0;
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        const double* n = node(c, (i + a) + x_.nodes * (j + b));
+        // n = f, fx, fy, fxy; x weight for f/fy: w[2a], for fx/fxy: w[2a+1]; y likewise with b.
+        const double vx0 = wx.w0[2 * a], dx0 = wx.w0[2 * a + 1];
+        const double vx1 = wx.w1[2 * a], dx1 = wx.w1[2 * a + 1];
+        const double vx2 = wx.w2[2 * a], dx2 = wx.w2[2 * a + 1];
+        const double vy0 = wy.w0[2 * b], dy0 = wy.w0[2 * b + 1];
+        const double vy1 = wy.w1[2 * b], dy1 = wy.w1[2 * b + 1];
+        const double vy2 = wy.w2[2 * b], dy2 = wy.w2[2 * b + 1];
+        auto term = [&](double X_f, double X_d, double Y_f, double Y_d) {
+          return X_f * Y_f * n[0] + X_d * Y_f * n[1] + X_f * Y_d * n[2] + X_d * Y_d * n[3];
+        };
+        g += term(vx0, dx0, vy0, dy0);
+        gx += term(vx1, dx1, vy0, dy0);
+        gy += term(vx0, dx0, vy1, dy1);
+        gxx += term(vx2, dx2, vy0, dy0);
+        gxy += term(vx1, dx1, vy1, dy1);
+        gyy += term(vx0, dx0, vy2, dy2);
+      }
+    }
+    out.f[c] = g + ex * gx + ey * gy + ex * ey * gxy;
+    out.grad[c] = {gx + ey * gxy, gy + ex * gxy};
+    out.hess[c] = {outX ? 0.0 : gxx, gxy, outY ? 0.0 : gyy};
+  }
+  out.outside = outX || outY;
+}
+
+}  // namespace bdfcar::mb

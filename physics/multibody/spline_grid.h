@@ -1,0 +1,61 @@
+// A smooth function of one or two coordinates tabulated on a uniform grid:
+// tensor-product cubic splines with natural ends (C2 along each coordinate),
+// several components sharing the grid. Used for kinematics derived from a
+// linkage (a wheel carrier's pose as a function of travel and rack), where
+// Newton needs values, gradients and second derivatives that are smooth.
+//
+// Beyond the grid the function continues as its first-order expansion at the
+// nearest grid point, f + ex fx + ey fy + ex ey fxy (ex, ey: the distances
+// outside): C1 everywhere, and C2 along a coordinate because a natural
+// spline's second derivative is zero at its ends. Second derivatives out
+// there leave out third-order terms (ey fxxy): outside the grid is a fallback
+// the caller reports, not a region to work in.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace bdfcar::mb {
+
+struct GridAxis {
+  double start = 0, step = 1;  // first node and spacing (step > 0)
+  int nodes = 0;               // at least 3
+  double end() const { return start + step * (nodes - 1); }
+};
+
+class SplineGrid {
+ public:
+  static constexpr int kMaxComponents = 12;
+
+  // One value of the function (every component) and its derivatives.
+  struct Sample {
+    std::array<double, kMaxComponents> f{};
+    std::array<std::array<double, 2>, kMaxComponents> grad{};  // d/dx, d/dy
+    std::array<std::array<double, 3>, kMaxComponents> hess{};  // xx, xy, yy
+    bool outside = false;                                        // beyond the grid
+  };
+
+  SplineGrid() = default;
+  // samples[c][i + x.nodes * j]: component c at node (i, j); for one
+  // coordinate y.nodes == 1. Throws std::invalid_argument on bad sizes.
+  SplineGrid(const GridAxis& x, const GridAxis& y, const std::vector<std::vector<double>>& samples);
+
+  int dimensions() const { return y_.nodes > 1 ? 2 : 1; }
+  int components() const { return components_; }
+  const GridAxis& axisX() const { return x_; }
+  const GridAxis& axisY() const { return y_; }
+
+  // Every component at (x, y); y is ignored for one coordinate. No allocation.
+  void eval(double x, double y, Sample& out) const;
+
+ private:
+  // Node data of component c at node n: f, fx, fy, fxy.
+  const double* node(int c, int n) const { return &data_[(static_cast<std::size_t>(c) * nodes_ + n) * 4]; }
+
+  GridAxis x_, y_;
+  int components_ = 0, nodes_ = 0;
+  std::vector<double> data_;
+};
+
+}  // namespace bdfcar::mb

@@ -1,0 +1,532 @@
+#include "vehicle/kinematic_model.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/kinematics.h"
+#include "multibody/model_error.h"
+#include "multibody/multibody_dae.h"
+#include "vehicle/equilibrium.h"
+#include "vehicle/motion_ratio.h"
+
+namespace bdfcar::vehicle {
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+const char* kCorner[4] = {"FL", "FR", "RL", "RR"};
+
+// The linkage held by its chassis at design, with each wheel centre moved by
+// s vertically relative to the chassis and the rack at r: Newton on the loop
+// constraints plus one travel equation per wheel over the suspension
+// coordinates (all but the chassis, the rack and the wheel spins).
+class LinkageSweep {
+ public:
+  explicit LinkageSweep(const Vehicle& v) : v_(v), m_(v.model), d_(mb::makeData(v.model)) {
+    for (const mb::CutJoint& c : m_.cutJoints)
+      if (c.type != mb::CutJointType::Driver)
+        for (int r = 0; r < c.rows; ++r) rows_.push_back(c.row + r);
+    for (size_t i = 0; i < m_.bodies.size(); ++i) {
+      const int b = static_cast<int>(i);
+      bool spin = false;
+      for (const WheelLayout& w : v.layout.wheels) spin |= w.spindle == b;
+      if (b == v.layout.chassis || b == v.layout.rack || spin) continue;
+      for (int k = 0; k < m_.bodies[i].nv; ++k) free_.push_back(m_.bodies[i].vIndex + k);
+    }
+    if (static_cast<int>(free_.size()) != static_cast<int>(rows_.size()) + 4)
+      throw mb::ModelError("kinematic model: the suspension has " + std::to_string(free_.size()) +
+                           " coordinates and " + std::to_string(rows_.size()) +
+                           " loop equations; a sweep by wheel travel needs exactly one free motion per wheel");
+    design_ = designPositions(v);
+    std::string msg;
+    mb::MultibodyDae dae(m_);
+    if (!assemble(v, dae, 0.0, design_, msg)) throw mb::ModelError("kinematic model: the linkage does not assemble: " + msg);
+    mb::updatePositions(m_, design_, d_);
+    for (int w = 0; w < 4; ++w) z0_[w] = wheelCentre(w).z();
+  }
+
+  const VectorXd& design() const { return design_; }
+  int freeCount() const { return static_cast<int>(free_.size()); }
+
+  // Solves from q (updated in place); false if Newton does not converge.
+  bool solve(double s, double r, VectorXd& q) {
+    q(v_.layout.rackQ) = r;
+    VectorXd res(rows()), dx;
+    for (int it = 0; it < 25; ++it) {
+      residual(q, s, res);
+      if (!res.allFinite()) return false;
+      if (res.lpNorm<Eigen::Infinity>() < 1e-12) return true;
+      if (it % 4 == 0) {
+        jacobian(q, s);
+        lu_.compute(J_);
+      }
+      dx = lu_.solve(res);
+      step(q, -dx, q);
+    }
+    residual(q, s, res);
+    return res.lpNorm<Eigen::Infinity>() < 1e-10;
+  }
+
+  // Suspension-coordinate direction of a unit travel of wheel w alone, at q.
+  VectorXd travelDirection(const VectorXd& q, int w) {
+    jacobian(q, 0.0);
+    VectorXd e = VectorXd::Zero(rows());
+    e(static_cast<int>(rows_.size()) + w) = 1.0;
+    const VectorXd dx = J_.colPivHouseholderQr().solve(e);
+    VectorXd full = VectorXd::Zero(m_.nv);
+    for (size_t j = 0; j < free_.size(); ++j) full(free_[j]) = dx(j);
+    return full;
+  }
+
+  // Positions at q, in data() (the chassis is at the world origin, unrotated, but for its height).
+  mb::Data& at(const VectorXd& q) {
+    mb::updatePositions(m_, q, d_);
+    return d_;
+  }
+  Vec3 wheelCentre(int w) const {
+    const int sp = v_.layout.wheels[w].spindle;
+    const int ch = v_.layout.chassis;
+    return d_.R[ch].transpose() * (mb::pointPosition(d_, sp, m_.bodies[sp].inChild.origin) - d_.p[ch]);
+  }
+  double designWheelZ(int w) const { return z0_[w]; }
+
+ private:
+  int rows() const { return static_cast<int>(rows_.size()) + 4; }
+
+  void residual(const VectorXd& q, double s, VectorXd& out) {
+    mb::updatePositions(m_, q, d_);
+    mb::constraintPositions(m_, q, d_);
+    for (size_t k = 0; k < rows_.size(); ++k) out(k) = d_.phi(rows_[k]);
+    for (int w = 0; w < 4; ++w) out(static_cast<int>(rows_.size()) + w) = wheelCentre(w).z() - z0_[w] - s;
+  }
+
+  void step(const VectorXd& q, const VectorXd& dx, VectorXd& out) {
+    VectorXd full = VectorXd::Zero(m_.nv);
+    for (size_t j = 0; j < free_.size(); ++j) full(free_[j]) = dx(j);
+    VectorXd next(m_.nq);
+    mb::retract(m_, q, full, next);
+    out = next;
+  }
+
+  // Central differences over the suspension coordinates.
+  void jacobian(const VectorXd& q, double s) {
+    const int n = rows();
+    J_.resize(n, static_cast<int>(free_.size()));
+    VectorXd rp(n), rm(n), qp(m_.nq), qm(m_.nq), e = VectorXd::Zero(static_cast<int>(free_.size()));
+    const double h = 1e-7;
+    for (size_t j = 0; j < free_.size(); ++j) {
+      e.setZero();
+      e(j) = h;
+      step(q, e, qp);
+      step(q, -e, qm);
+      residual(qp, s, rp);
+      residual(qm, s, rm);
+      J_.col(j) = (rp - rm) / (2 * h);
+    }
+  }
+
+  const Vehicle& v_;
+  const mb::Model& m_;
+  mb::Data d_;
+  std::vector<int> rows_, free_;
+  VectorXd design_;
+  std::array<double, 4> z0_{};
+  MatrixXd J_;
+  Eigen::PartialPivLU<MatrixXd> lu_;
+};
+
+// Angles (psi, phi, theta) of M = Rz(psi) Rx(phi) Ry(theta).
+Vec3 zxyAngles(const Mat3& M) {
+  return Vec3(std::atan2(-M(0, 1), M(1, 1)), std::asin(std::clamp(M(2, 1), -1.0, 1.0)), std::atan2(-M(2, 0), M(2, 2)));
+}
+
+// Mass, first moment and inertia about the chassis origin of a set of rigid
+// bodies in the chassis frame: sums and differences of rigid bodies.
+struct MassMoments {
+  double m = 0;
+  Vec3 h = Vec3::Zero();
+  Mat3 I = Mat3::Zero();
+  void add(double mass, const Vec3& com, const Mat3& inertiaAtCom, double sign = 1.0) {
+    m += sign * mass;
+    h += sign * mass * com;
+    I += sign * (inertiaAtCom + mass * (com.squaredNorm() * Mat3::Identity() - com * com.transpose()));
+  }
+  Vec3 com() const { return h / m; }
+  Mat3 inertiaAtCom() const {
+    const Vec3 c = com();
+    return I - m * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
+  }
+};
+
+// What the sweep gives one corner: per table component, the samples on the grid.
+struct CornerTable {
+  bool steered = false;
+  std::vector<int> springs;  // linkage spring indices moving with this wheel
+  std::vector<std::vector<double>> samples;
+  Mat3 rest = Mat3::Identity();
+};
+
+struct Sweep {
+  mb::GridAxis travel, rack;
+  std::array<CornerTable, 4> corners;
+  int configurations = 0;
+};
+
+Sweep sweepLinkage(const Vehicle& v, LinkageSweep& ls, const KinematicGrid& g, double travel,
+                   const std::vector<MotionRatio>& ratios) {
+  const mb::Model& m = v.model;
+  Sweep out;
+  out.travel = {-travel, 2 * travel / (g.travelNodes - 1), g.travelNodes};
+  const double rackRange = std::max(1e-3, g.rackMargin * std::abs(v.spec.steering.rackTravelFull));
+  out.rack = {-rackRange, 2 * rackRange / (g.rackNodes - 1), g.rackNodes};
+  const int ns = out.travel.nodes, nr = out.rack.nodes;
+  for (int w = 0; w < 4; ++w) {
+    CornerTable& c = out.corners[w];
+    for (size_t k = 0; k < ratios.size(); ++k)
+      if (ratios[k].wheel == w) c.springs.push_back(static_cast<int>(k));
+    if (6 + c.springs.size() > static_cast<size_t>(mb::SplineGrid::kMaxComponents))
+      throw mb::ModelError(std::string("kinematic model: too many spring-dampers on wheel ") + kCorner[w]);
+    c.samples.assign(6 + c.springs.size(), std::vector<double>(ns * nr));
+  }
+  // Rack rows from the centre outwards, travel from the centre outwards: each
+  // solve starts from a neighbour's solution.
+  std::vector<VectorXd> rowStart(nr);
+  const int jc = nr / 2, ic = ns / 2;
+  std::vector<int> rackOrder = {jc}, travelOrder = {ic};
+  for (int k = 1; k <= std::max(jc, nr - 1 - jc); ++k) {
+    if (jc + k < nr) rackOrder.push_back(jc + k);
+    if (jc - k >= 0) rackOrder.push_back(jc - k);
+  }
+  std::array<Mat3, 4> rest;
+  bool haveRest = false;
+  for (int j : rackOrder) {
+    const int jn = j == jc ? jc : (j > jc ? j - 1 : j + 1);
+    VectorXd q = j == jc ? ls.design() : rowStart[jn];
+    const double r = out.rack.start + j * out.rack.step;
+    for (int dir : {+1, -1}) {
+      VectorXd qi = dir > 0 ? q : rowStart[j];
+      for (int i = ic; i >= 0 && i < ns; i += dir) {
+        if (dir < 0 && i == ic) continue;
+        const double s = out.travel.start + i * out.travel.step;
+        if (!ls.solve(s, r, qi)) {
+          char buf[200];
+          std::snprintf(buf, sizeof buf, "the linkage cannot be assembled at wheel travel %.3f m, rack %.4f m", s, r);
+          throw mb::ModelError(buf);
+        }
+        ++out.configurations;
+        if (i == ic) rowStart[j] = qi;
+        mb::Data& d = ls.at(qi);
+        const Mat3 Rc = d.R[v.layout.chassis];
+        const Vec3 pc = d.p[v.layout.chassis];
+        if (!haveRest && i == ic && j == jc) {
+          for (int w = 0; w < 4; ++w) rest[w] = Rc.transpose() * d.R[v.layout.wheels[w].carrier];
+          haveRest = true;
+        }
+        for (int w = 0; w < 4; ++w) {
+          CornerTable& c = out.corners[w];
+          const int carrier = v.layout.wheels[w].carrier;
+          const Vec3 t = Rc.transpose() * (d.p[carrier] - pc);
+          const Vec3 a = zxyAngles(rest[w].transpose() * Rc.transpose() * d.R[carrier]);
+          const int n = i + ns * j;
+          for (int k = 0; k < 3; ++k) {
+            c.samples[k][n] = t(k);
+            c.samples[3 + k][n] = a(k);
+          }
+          for (size_t k = 0; k < c.springs.size(); ++k) {
+            const mb::SpringDamper& e = m.springs[c.springs[k]];
+            c.samples[6 + k][n] = (mb::pointPosition(d, e.bodyA, e.pointA) - mb::pointPosition(d, e.bodyB, e.pointB)).norm();
+          }
+        }
+      }
+    }
+  }
+  for (int w = 0; w < 4; ++w) {
+    CornerTable& c = out.corners[w];
+    c.rest = rest[w];
+    // Steered: the carrier moves with the rack (more than a micrometre or microradian).
+    double spread = 0;
+    for (int k = 0; k < 6; ++k)
+      for (int i = 0; i < ns; ++i)
+        for (int j = 0; j < nr; ++j) spread = std::max(spread, std::abs(c.samples[k][i + ns * j] - c.samples[k][i + ns * jc]));
+    c.steered = spread > 1e-6;
+    if (!c.steered)
+      for (auto& comp : c.samples) comp = std::vector<double>(comp.begin() + ns * jc, comp.begin() + ns * (jc + 1));
+  }
+  return out;
+}
+
+// The kinematic model for given carrier masses.
+Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& design,
+                       const std::array<double, 4>& carrierMass) {
+  const mb::Model& lm = link.model;
+  const VehicleLayout& LL = link.layout;
+  mb::Data d = mb::makeData(lm);
+  mb::updatePositions(lm, design, d);
+  const Mat3 Rc = d.R[LL.chassis];
+  const Vec3 pc = d.p[LL.chassis];
+  auto inChassis = [&](int b, Vec3& com, Mat3& I) {
+    const Mat3 R = Rc.transpose() * d.R[b];
+    com = Rc.transpose() * (mb::pointPosition(d, b, lm.bodies[b].com) - pc);
+    I = R * lm.bodies[b].inertia * R.transpose();
+  };
+  // The chassis: every linkage body but the wheels and the rack, less the carriers.
+  MassMoments chassis;
+  for (size_t i = 0; i < lm.bodies.size(); ++i) {
+    const int b = static_cast<int>(i);
+    bool wheel = false;
+    for (const WheelLayout& w : LL.wheels) wheel |= w.spindle == b;
+    if (wheel || b == LL.rack) continue;
+    Vec3 com;
+    Mat3 I;
+    inChassis(b, com, I);
+    chassis.add(lm.bodies[b].mass, com, I);
+  }
+  for (int w = 0; w < 4; ++w) {
+    const int u = LL.wheels[w].carrier;
+    Vec3 com;
+    Mat3 I;
+    inChassis(u, com, I);
+    chassis.add(carrierMass[w], com, I * (carrierMass[w] / lm.bodies[u].mass), -1.0);
+  }
+
+  Vehicle out;
+  out.spec = link.spec;
+  out.spec.cutJoints.clear();
+  out.fidelity = Fidelity::Kinematic;
+  std::vector<BodySpec> specs;
+  mb::ModelBuilder mbld;
+  VehicleLayout& L = out.layout;
+
+  mb::Body ch = lm.bodies[LL.chassis];
+  ch.mass = chassis.m;
+  ch.com = chassis.com();
+  ch.inertia = chassis.inertiaAtCom();
+  ch.inertia = 0.5 * (ch.inertia + ch.inertia.transpose());
+  L.chassis = mbld.addBody(ch);
+  BodySpec chs = link.spec.bodies[LL.chassis];
+  chs.mass = ch.mass;
+  chs.com = ch.com;
+  chs.inertia = ch.inertia;
+  specs.push_back(chs);
+
+  mb::Body rack = lm.bodies[LL.rack];
+  rack.parent = L.chassis;
+  L.rack = mbld.addBody(rack);
+  specs.push_back(link.spec.bodies[LL.rack]);
+  {
+    mb::CutJoint drv;
+    drv.name = "rack_travel";
+    drv.type = mb::CutJointType::Driver;
+    drv.drivenBody = L.rack;
+    mbld.addCutJoint(drv);
+  }
+
+  std::array<int, 4> carrierIndex{};
+  for (int w = 0; w < 4; ++w) {
+    const CornerTable& c = sw.corners[w];
+    mb::JointTable table;
+    table.rest = c.rest;
+    table.grid = mb::SplineGrid(sw.travel, c.steered ? sw.rack : mb::GridAxis{0, 1, 1}, c.samples);
+    const int u = LL.wheels[w].carrier;
+    mb::Body carrier = lm.bodies[u];
+    carrier.mass = carrierMass[w];
+    carrier.inertia = lm.bodies[u].inertia * (carrierMass[w] / lm.bodies[u].mass);
+    carrier.rotorInertia = 0;
+    carrier.parent = L.chassis;
+    carrier.joint = c.steered ? mb::JointType::Tabulated2 : mb::JointType::Tabulated1;
+    carrier.jointName = carrier.name + "_travel";
+    carrier.inParent = mb::JointFrame{};
+    carrier.inChild = mb::JointFrame{};
+    carrier.table = mbld.addTable(table);
+    carrierIndex[w] = mbld.addBody(carrier);
+    BodySpec cs = link.spec.bodies[u];
+    cs.mass = carrier.mass;
+    cs.inertia = cs.inertia * (carrierMass[w] / lm.bodies[u].mass);
+    cs.joint.type = carrier.joint;
+    cs.joint.parent = link.spec.bodies[LL.chassis].name;
+    specs.push_back(cs);
+    if (c.steered) {
+      mb::CutJoint drv;
+      drv.name = std::string("rack_travel_") + kCorner[w];
+      drv.type = mb::CutJointType::Driver;
+      drv.drivenBody = carrierIndex[w];
+      drv.drivenCoordinate = 1;
+      mbld.addCutJoint(drv);
+    }
+    mb::Body wheel = lm.bodies[LL.wheels[w].spindle];
+    wheel.parent = carrierIndex[w];
+    L.wheels[w].spindle = mbld.addBody(wheel);
+    L.wheels[w].carrier = carrierIndex[w];
+    L.wheels[w].spinSign = LL.wheels[w].spinSign;
+    specs.push_back(link.spec.bodies[LL.wheels[w].spindle]);
+    // Springs of this corner act through their tabulated lengths.
+    for (size_t k = 0; k < c.springs.size(); ++k) {
+      mb::SpringDamper e = lm.springs[c.springs[k]];
+      e.bodyA = e.bodyB = mb::kGround;
+      e.pointA = e.pointB = Vec3::Zero();
+      e.tableBody = carrierIndex[w];
+      e.tableComponent = 6 + static_cast<int>(k);
+      mbld.addSpring(e);
+    }
+  }
+  out.spec.bodies = specs;
+  // Springs in the order the model holds them.
+  out.spec.springs.clear();
+  for (int w = 0; w < 4; ++w)
+    for (int k : sw.corners[w].springs) out.spec.springs.push_back(link.spec.springs[k]);
+  out.model = mbld.build();
+  L.rackQ = out.model.bodies[L.rack].qIndex;
+  L.rackV = out.model.bodies[L.rack].vIndex;
+  L.rackAxisSign = LL.rackAxisSign;
+  L.rackDriverSlot = 0;
+  L.cutJointEquations = 0;
+  for (WheelLayout& wl : L.wheels) {
+    wl.spinV = out.model.bodies[wl.spindle].vIndex;
+    ++L.spinCoordinates;
+  }
+  return out;
+}
+
+// Generalised mass of wheel w's travel in the kinematic model at design.
+double kinematicTravelMass(const Vehicle& k, int w) {
+  mb::Data d = mb::makeData(k.model);
+  const VectorXd q = designPositions(k);
+  mb::updatePositions(k.model, q, d);
+  MatrixXd M(k.model.nv, k.model.nv);
+  mb::massMatrix(k.model, d, M);
+  const int vi = k.model.bodies[k.layout.wheels[w].carrier].vIndex;
+  return M(vi, vi);
+}
+
+// Wheel centre and spin axis (chassis frame) of wheel w in a model's data.
+void wheelPose(const Vehicle& v, const mb::Data& d, int w, Vec3& centre, Vec3& axis) {
+  const int sp = v.layout.wheels[w].spindle, ch = v.layout.chassis;
+  const Mat3 Rt = d.R[ch].transpose();
+  centre = Rt * (mb::pointPosition(d, sp, v.model.bodies[sp].inChild.origin) - d.p[ch]);
+  axis = Rt * d.R[sp].col(1);
+}
+
+KinematicCheck checkAgainstLinkage(const Vehicle& link, LinkageSweep& ls, const Vehicle& kin, const Sweep& sw) {
+  KinematicCheck c;
+  c.travelRange = sw.travel.end();
+  c.rackRange = sw.rack.end();
+  mb::Data dk = mb::makeData(kin.model);
+  VectorXd ql = ls.design();
+  // Midpoints between the nodes (every other cell in each direction), where
+  // interpolation errs most.
+  for (int j = 0; j + 1 < sw.rack.nodes; j += 2) {
+    const double r = sw.rack.start + (j + 0.5) * sw.rack.step;
+    ql = ls.design();
+    for (int i = sw.travel.nodes / 2; i + 1 < sw.travel.nodes; i += 2) {
+      const double s = sw.travel.start + (i + 0.5) * sw.travel.step;
+      if (!ls.solve(s, r, ql)) continue;
+      ++c.points;
+      mb::Data& dl = ls.at(ql);
+      VectorXd qk = designPositions(kin);
+      qk(kin.layout.rackQ) = r;
+      for (int w = 0; w < 4; ++w) {
+        const mb::Body& cb = kin.model.bodies[kin.layout.wheels[w].carrier];
+        qk(cb.qIndex) = s;
+        if (cb.nq > 1) qk(cb.qIndex + 1) = r;
+      }
+      mb::updatePositions(kin.model, qk, dk);
+      for (int w = 0; w < 4; ++w) {
+        Vec3 cl, al, ck, ak;
+        wheelPose(link, dl, w, cl, al);
+        wheelPose(kin, dk, w, ck, ak);
+        // Both models put the chassis at the same design pose.
+        c.wheelCentre = std::max(c.wheelCentre, (cl - ck).norm());
+        c.camber = std::max(c.camber, std::abs(std::asin(al.z()) - std::asin(ak.z())));
+        c.toe = std::max(c.toe, std::abs(std::atan2(-al.x(), al.y()) - std::atan2(-ak.x(), ak.y())));
+      }
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+KinematicDerivation deriveKinematic(const Vehicle& linkage, const KinematicGrid& grid) {
+  if (linkage.fidelity != Fidelity::Linkage) throw mb::ModelError("kinematic model: derived from a linkage model only");
+  const std::vector<MotionRatio> ratios = motionRatios(linkage);
+  for (const MotionRatio& r : ratios)
+    if (r.wheel < 0)
+      throw mb::ModelError("kinematic model: spring-damper '" + r.element + "' does not move with one wheel");
+  LinkageSweep ls(linkage);
+  KinematicDerivation out;
+  // The widest travel the linkage reaches, from the grid's down to a quarter of it.
+  Sweep sw;
+  double travel = grid.travel;
+  for (int attempt = 0;; ++attempt) {
+    try {
+      sw = sweepLinkage(linkage, ls, grid, travel, ratios);
+      break;
+    } catch (const mb::ModelError& e) {
+      if (attempt == 4) throw mb::ModelError(std::string("kinematic model: ") + e.what());
+      travel *= 0.75;
+    }
+  }
+  out.sweepConfigurations = sw.configurations;
+  // Carrier masses from the linkage's generalised mass along each travel.
+  mb::MultibodyDae dae(linkage.model);
+  MatrixXd M(linkage.model.nv, linkage.model.nv);
+  dae.massMatrix(0, ls.design(), M);
+  std::array<double, 4> trial{}, doubled{};
+  for (int w = 0; w < 4; ++w) {
+    const VectorXd n = ls.travelDirection(ls.design(), w);
+    out.linkageTravelMass[w] = n.dot(M * n);
+    trial[w] = linkage.model.bodies[linkage.layout.wheels[w].carrier].mass;
+    doubled[w] = 2 * trial[w];
+    out.steered[w] = sw.corners[w].steered;
+  }
+  // The carrier's share is linear in its mass: two trial builds give it.
+  const Vehicle k1 = buildKinematic(linkage, sw, ls.design(), trial);
+  const Vehicle k2 = buildKinematic(linkage, sw, ls.design(), doubled);
+  for (int w = 0; w < 4; ++w) {
+    const double m1 = kinematicTravelMass(k1, w), m2 = kinematicTravelMass(k2, w);
+    const double perKg = (m2 - m1) / trial[w];
+    const double others = m1 - perKg * trial[w];
+    out.carrierMass[w] = (out.linkageTravelMass[w] - others) / perKg;
+    if (!(out.carrierMass[w] > 0))
+      throw mb::ModelError(std::string("kinematic model: wheel ") + kCorner[w] +
+                           ": the linkage's travel inertia is below the wheel's own");
+  }
+  out.vehicle = buildKinematic(linkage, sw, ls.design(), out.carrierMass);
+  out.check = checkAgainstLinkage(linkage, ls, out.vehicle, sw);
+  return out;
+}
+
+std::string describeKinematic(const KinematicDerivation& d) {
+  std::ostringstream o;
+  char buf[300];
+  const Vehicle& v = d.vehicle;
+  std::snprintf(buf, sizeof buf, "kinematic model: %d coordinates, %d constraint equations (rack drivers), %d bodies\n",
+                v.model.nv, v.model.nc, static_cast<int>(v.model.bodies.size()));
+  o << buf;
+  std::snprintf(buf, sizeof buf, "  tables: wheel travel +-%.3f m, rack +-%.4f m, from %d linkage configurations\n",
+                d.check.travelRange, d.check.rackRange, d.sweepConfigurations);
+  o << buf;
+  for (int w = 0; w < 4; ++w) {
+    std::snprintf(buf, sizeof buf, "  %s: %s, carrier %.2f kg (linkage travel inertia %.2f kg)\n", kCorner[w],
+                  d.steered[w] ? "travel x rack" : "travel", d.carrierMass[w], d.linkageTravelMass[w]);
+    o << buf;
+  }
+  std::snprintf(buf, sizeof buf, "  chassis: %.1f kg (total %.1f kg, as the linkage)\n", v.model.bodies[0].mass,
+                v.model.totalMass());
+  o << buf;
+  std::snprintf(buf, sizeof buf,
+                "  check against the linkage at %d configurations between the nodes: wheel centre %.2g m, "
+                "camber %.2g rad, toe/steer %.2g rad\n",
+                d.check.points, d.check.wheelCentre, d.check.camber, d.check.toe);
+  o << buf;
+  return o.str();
+}
+
+}  // namespace bdfcar::vehicle

@@ -1,0 +1,196 @@
+// Tabulated joints (reduced models derived from a linkage) against the exact
+// joints they tabulate: a universal joint with an offset body and a
+// point-to-point spring, sampled on a grid, must give the same kinematics and
+// inverse dynamics as the universal joint itself, up to the spline's
+// interpolation error. The spline grid itself against a smooth function and
+// against finite differences of its own values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "multibody/data.h"
+#include "multibody/dynamics.h"
+#include "multibody/kinematics.h"
+#include "multibody/multibody_dae.h"
+#include "multibody/model_error.h"
+#include "multibody/spline_grid.h"
+
+namespace bdfcar::mb {
+namespace {
+
+double smooth(double x, double y) { return std::sin(1.3 * x) * std::cos(0.7 * y) + 0.2 * x * y * y; }
+
+TEST(SplineGrid, ReproducesASmoothFunctionAndItsDerivatives) {
+  const GridAxis ax{-1.0, 0.05, 41}, ay{-0.5, 0.05, 21};
+  std::vector<std::vector<double>> samples(1, std::vector<double>(ax.nodes * ay.nodes));
+  for (int j = 0; j < ay.nodes; ++j)
+    for (int i = 0; i < ax.nodes; ++i)
+      samples[0][i + ax.nodes * j] = smooth(ax.start + i * ax.step, ay.start + j * ay.step);
+  const SplineGrid g(ax, ay, samples);
+  SplineGrid::Sample s, sp, sm;
+  // Interior points away from the natural ends: the value to O(h^4), first
+  // derivatives to O(h^3).
+  for (double x : {-0.61, -0.13, 0.02, 0.37, 0.58})
+    for (double y : {-0.27, 0.04, 0.21}) {
+      g.eval(x, y, s);
+      EXPECT_NEAR(s.f[0], smooth(x, y), 2e-6) << x << " " << y;
+      EXPECT_NEAR(s.grad[0][0], 1.3 * std::cos(1.3 * x) * std::cos(0.7 * y) + 0.2 * y * y, 2e-4);
+      EXPECT_NEAR(s.grad[0][1], -0.7 * std::sin(1.3 * x) * std::sin(0.7 * y) + 0.4 * x * y, 2e-4);
+      EXPECT_FALSE(s.outside);
+      // The gradient and Hessian are those of the interpolant itself (central differences).
+      const double e = 1e-6;
+      g.eval(x + e, y, sp);
+      g.eval(x - e, y, sm);
+      EXPECT_NEAR(s.grad[0][0], (sp.f[0] - sm.f[0]) / (2 * e), 1e-7);
+      EXPECT_NEAR(s.hess[0][0], (sp.grad[0][0] - sm.grad[0][0]) / (2 * e), 1e-5);
+      EXPECT_NEAR(s.hess[0][1], (sp.grad[0][1] - sm.grad[0][1]) / (2 * e), 1e-5);
+      g.eval(x, y + e, sp);
+      g.eval(x, y - e, sm);
+      EXPECT_NEAR(s.grad[0][1], (sp.f[0] - sm.f[0]) / (2 * e), 1e-7);
+      EXPECT_NEAR(s.hess[0][2], (sp.grad[0][1] - sm.grad[0][1]) / (2 * e), 1e-5);
+    }
+}
+
+TEST(SplineGrid, ContinuesLinearlyAndContinuouslyBeyondTheGrid) {
+  const GridAxis ax{0.0, 0.1, 11};
+  std::vector<std::vector<double>> samples(1, std::vector<double>(ax.nodes));
+  for (int i = 0; i < ax.nodes; ++i) samples[0][i] = std::exp(ax.start + i * ax.step);
+  const SplineGrid g(ax, GridAxis{0, 1, 1}, samples);
+  SplineGrid::Sample in, edge, out1, out2;
+  g.eval(1.0 - 1e-9, 0, in);
+  g.eval(1.0, 0, edge);
+  g.eval(1.2, 0, out1);
+  g.eval(1.4, 0, out2);
+  EXPECT_NEAR(in.f[0], edge.f[0], 1e-8);
+  EXPECT_NEAR(in.grad[0][0], edge.grad[0][0], 1e-6);
+  EXPECT_TRUE(out1.outside);
+  EXPECT_NEAR(out1.f[0], edge.f[0] + 0.2 * edge.grad[0][0], 1e-12);
+  EXPECT_NEAR(out2.f[0] - out1.f[0], out1.f[0] - edge.f[0], 1e-12);
+  EXPECT_EQ(out1.hess[0][0], 0.0);
+}
+
+TEST(SplineGrid, RefusesBadGrids) {
+  const std::vector<std::vector<double>> two(1, std::vector<double>(2, 0.0));
+  EXPECT_THROW(SplineGrid(GridAxis{0, 1, 2}, GridAxis{0, 1, 1}, two), std::invalid_argument);
+  std::vector<std::vector<double>> nan(1, std::vector<double>(3, 0.0));
+  nan[0][1] = std::nan("");
+  EXPECT_THROW(SplineGrid(GridAxis{0, 1, 3}, GridAxis{0, 1, 1}, nan), std::invalid_argument);
+}
+
+// Body offset from a universal joint's centre (in the child joint frame), the
+// spring's anchor on the ground and on the body (body frame).
+const Vec3 kOffset(0.12, -0.05, -0.4);
+const Vec3 kGroundAnchor(0.3, 0.2, 0.5);
+const Vec3 kBodyAnchor(0.05, 0.02, 0.1);
+
+Body pendulumBody() {
+  Body b;
+  b.name = "bob";
+  b.mass = 3.0;
+  b.com = Vec3(0.01, 0.02, -0.03);
+  b.inertia = Vec3(0.05, 0.07, 0.04).asDiagonal();
+  b.parent = kGround;
+  b.jointName = "hinge";
+  return b;
+}
+
+SpringDamper pendulumSpring() {
+  SpringDamper s;
+  s.name = "spring";
+  s.freeLength = 0.9;
+  s.spring.coefficient = 800.0;
+  s.damper.coefficient = 40.0;
+  return s;
+}
+
+Model universalPendulum() {
+  ModelBuilder mb;
+  Body b = pendulumBody();
+  b.joint = JointType::Universal;
+  b.inChild.origin = -kOffset;  // the body frame sits at kOffset from the joint centre
+  const int i = mb.addBody(b);
+  SpringDamper s = pendulumSpring();
+  s.bodyA = kGround;
+  s.pointA = kGroundAnchor;
+  s.bodyB = i;
+  s.pointB = kBodyAnchor;
+  mb.addSpring(s);
+  return mb.build();
+}
+
+// The same pendulum as a table over (alpha, beta): R = Rx(alpha) Ry(beta)
+// (psi = 0, phi = alpha, theta = beta), origin R kOffset, and the spring length.
+Model tabulatedPendulum() {
+  const GridAxis a{-0.6, 0.02, 61}, b{-0.5, 0.02, 51};
+  std::vector<std::vector<double>> samples(7, std::vector<double>(a.nodes * b.nodes));
+  for (int j = 0; j < b.nodes; ++j)
+    for (int i = 0; i < a.nodes; ++i) {
+      const double al = a.start + i * a.step, be = b.start + j * b.step;
+      const Mat3 R = rotX(al) * rotY(be);
+      const Vec3 o = R * kOffset;
+      const int n = i + a.nodes * j;
+      for (int k = 0; k < 3; ++k) samples[k][n] = o(k);
+      samples[3][n] = 0;
+      samples[4][n] = al;
+      samples[5][n] = be;
+      samples[6][n] = (o + R * kBodyAnchor - kGroundAnchor).norm();
+    }
+  ModelBuilder mb;
+  JointTable t;
+  t.grid = SplineGrid(a, b, samples);
+  Body body = pendulumBody();
+  body.joint = JointType::Tabulated2;
+  body.table = mb.addTable(t);
+  const int i = mb.addBody(body);
+  SpringDamper s = pendulumSpring();
+  s.tableBody = i;
+  s.tableComponent = 6;
+  mb.addSpring(s);
+  return mb.build();
+}
+
+TEST(TabulatedJoint, MatchesTheJointItTabulates) {
+  const Model exact = universalPendulum();
+  const Model table = tabulatedPendulum();
+  ASSERT_EQ(exact.nv, 2);
+  ASSERT_EQ(table.nv, 2);
+  MultibodyDae de(exact), dt(table);
+  integ::Residual re, rt;
+  re.resize(de.sizes());
+  rt.resize(dt.sizes());
+  integ::Message msg;
+  const integ::Vec lambda;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    integ::Vec q(2), v(2), a(2);
+    q << 0.4 * U(rng), 0.35 * U(rng);
+    v << 3 * U(rng), 3 * U(rng);
+    a << 20 * U(rng), 20 * U(rng);
+    ASSERT_EQ(de.residual(0, q, v, a, lambda, re, false, msg), integ::EvalStatus::Ok);
+    ASSERT_EQ(dt.residual(0, q, v, a, lambda, rt, false, msg), integ::EvalStatus::Ok);
+    // Pose, velocity and acceleration of the body, then the generalised forces.
+    EXPECT_LT((de.data().p[0] - dt.data().p[0]).norm(), 1e-7);
+    EXPECT_LT((de.data().R[0] - dt.data().R[0]).norm(), 1e-7);
+    EXPECT_LT((de.data().vel[0] - dt.data().vel[0]).norm(), 1e-5);
+    EXPECT_LT((de.data().acc[0] - dt.data().acc[0]).norm(), 1e-4);
+    EXPECT_NEAR(de.data().springLength[0], dt.data().springLength[0], 1e-7);
+    EXPECT_NEAR(de.data().springForce[0], dt.data().springForce[0], 1e-3);
+    EXPECT_LT((re.F - rt.F).norm(), 1e-3 * (1 + re.F.norm())) << re.F.transpose() << " | " << rt.F.transpose();
+  }
+}
+
+TEST(TabulatedJoint, RefusesATableOfTheWrongDimension) {
+  ModelBuilder mb;
+  JointTable t;
+  std::vector<std::vector<double>> samples(6, std::vector<double>(5, 0.0));
+  t.grid = SplineGrid(GridAxis{0, 0.1, 5}, GridAxis{0, 1, 1}, samples);
+  Body b = pendulumBody();
+  b.joint = JointType::Tabulated2;
+  b.table = mb.addTable(t);
+  EXPECT_THROW(mb.addBody(b), ModelError);
+}
+
+}  // namespace
+}  // namespace bdfcar::mb
