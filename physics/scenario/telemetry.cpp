@@ -1,5 +1,6 @@
 #include "scenario/telemetry.h"
 
+#include <charconv>
 #include <stdexcept>
 
 #include "config/units.h"
@@ -32,22 +33,29 @@ void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInpu
     if (v_.wheel(w).driven) drive = s.driveTorque[w];
   const auto& st = v_.spec.steering;
   const double pinionDeg = config::radToDeg(st.steeringWheelFull * in.steer);
+  // std::to_chars with a precision prints exactly what printf's %.10g does
+  // (the C++ standard defines it so), at a fraction of the cost: a 51-column
+  // row through snprintf cost as much as the physics step.
+  const double values[] = {
+      s.t, s.com.x(), s.com.y(), s.com.z(), s.roll, s.pitch, s.yaw, s.vx, s.yawRate, s.ay, s.com.z() - z0_,
+      s.rack - rack0_, s.Fz[0], s.Fz[1], s.Fz[2], s.Fz[3], in.steer, pinionDeg, st.rackTravelFull * in.steer,
+      s.ayHorizontal, s.vy, drive, config::radToDeg(s.steerAngle[0]), config::radToDeg(s.steerAngle[1]),
+      s.alpha[0], s.alpha[1], s.alpha[2], s.alpha[3], s.Fy[0], s.Fy[1], s.Fy[2], s.Fy[3], s.kappa[2],
+      s.kappa[3], s.ax, s.speed, in.throttle, in.brake, s.kappa[0], s.kappa[1], s.Fx[0], s.Fx[1], s.Fx[2],
+      s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce};
   char row[1536];
-  const int n = std::snprintf(row, sizeof row,
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%d,%.4g,%d\n",
-               s.t, s.com.x(), s.com.y(), s.com.z(), s.roll, s.pitch, s.yaw, s.vx, s.yawRate, s.ay, s.com.z() - z0_,
-               s.rack - rack0_, s.Fz[0], s.Fz[1], s.Fz[2], s.Fz[3], in.steer, pinionDeg, st.rackTravelFull * in.steer,
-               s.ayHorizontal, s.vy, drive, config::radToDeg(s.steerAngle[0]), config::radToDeg(s.steerAngle[1]),
-               s.alpha[0], s.alpha[1], s.alpha[2], s.alpha[3], s.Fy[0], s.Fy[1], s.Fy[2], s.Fy[3], s.kappa[2],
-               s.kappa[3], s.ax, s.speed, in.throttle, in.brake, s.kappa[0], s.kappa[1], s.Fx[0], s.Fx[1], s.Fx[2],
-               s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce,
-               in.newtonIterations, in.newtonCorrection, in.segment);
-  if (n < 0 || n >= static_cast<int>(sizeof row)) throw OutputError(file_.path() + ": a telemetry row too long");
-  file_.append(row, static_cast<std::size_t>(n));
+  char* p = row;
+  char* const end = row + sizeof row;
+  auto put = [&](std::to_chars_result r, char sep) {
+    if (r.ec != std::errc() || r.ptr == end) throw OutputError(file_.path() + ": a telemetry row too long");
+    p = r.ptr;
+    *p++ = sep;
+  };
+  for (double v : values) put(std::to_chars(p, end, v, std::chars_format::general, 10), ',');
+  put(std::to_chars(p, end, in.newtonIterations), ',');
+  put(std::to_chars(p, end, in.newtonCorrection, std::chars_format::general, 4), ',');
+  put(std::to_chars(p, end, in.segment), '\n');
+  file_.append(row, static_cast<std::size_t>(p - row));
 }
 
 }  // namespace bdfcar::scenario
