@@ -70,13 +70,19 @@ bench_table() {
     echo
     echo "| vehicle | instructions per 10 ms step |"
     echo "|---|---|"
-    for v in paper sedan; do
+    # The vehicle file, then the kinematic model derived from it (section 5b):
+    # what a scene that does not need the linkage saves per step.
+    for run in "paper linkage" "sedan linkage" "paper kinematic" "sedan kinematic"; do
+      set -- $run
+      v=$1 f=$2
       ir() {
-        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$1" "$build/app/bdfcar" run \
-          assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --duration "$1" 2>&1 |
+        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f.$1" "$build/app/bdfcar" run \
+          assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" --duration "$1" 2>&1 |
           awk '/Collected/ { print $4 }'
       }
-      echo "| $v.toml | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
+      label="$v.toml"
+      [ "$f" = kinematic ] && label="$v.toml, \`--fidelity kinematic\`"
+      echo "| $label | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
     done
     echo
     echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"

@@ -60,6 +60,11 @@ void writePlot(const std::string& dataPath, const std::string& png, const std::s
 // converged at 1 ms on smooth and hard manoeuvres (images under imageDir).
 void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir);
 
+// Sections of RESULTS.md: work-precision diagrams (image under imageDir) and
+// the hard cases' survival at long steps and with explicit methods.
+void workPrecisionSection(std::ostream& md, const std::string& imageDir);
+void survivalSection(std::ostream& md);
+
 // Section of RESULTS.md: the default Newton policy against the paper's on
 // hard cases (rough road, curb, jump, large steps): cost and error.
 void hardCasesSection(std::ostream& md, int repeats);

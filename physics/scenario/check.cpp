@@ -36,7 +36,7 @@ struct Watch {
 
 }  // namespace
 
-CheckResult checkScenario(const ScenarioSpec& spec) {
+CheckResult checkScenario(const ScenarioSpec& spec, std::vector<vehicle::VehicleSample>* samples) {
   CheckResult r;
   r.name = spec.name;
   r.file = spec.sourceFile;
@@ -44,7 +44,7 @@ CheckResult checkScenario(const ScenarioSpec& spec) {
   Simulation sim(spec);
   Watch w;
   RunOptions o;
-  o.keepSamples = false;
+  o.keepSamples = samples != nullptr;
   o.onSample = [&](const vehicle::VehicleSample& s) {
     if (!s.com.allFinite() || !std::isfinite(s.speed)) w.nonFinite = true;
     if (std::isnan(w.z0)) w.z0 = s.com.z();
@@ -63,7 +63,8 @@ CheckResult checkScenario(const ScenarioSpec& spec) {
     if (grounded == 0 && s.t > 0) w.allAirborne = true;
     w.last = s;
   };
-  const RunResult run = runScenario(sim, o);
+  RunResult run = runScenario(sim, o);
+  if (samples) *samples = std::move(run.samples);
   r.cost = stepCost(run.stepSeconds);
   r.counters = run.counters;
   r.simulated = run.simulatedSeconds;

@@ -24,8 +24,9 @@ struct CheckResult {
   double maxSpeed = 0, maxRise = 0;   // m/s, m
 };
 
-// Runs the scenario (with its [check], or the default bounds) and judges it.
-CheckResult checkScenario(const ScenarioSpec& spec);
+// Runs the scenario (with its [check], or the default bounds) and judges it;
+// the run's samples go to *samples when given (comparisons with other runs).
+CheckResult checkScenario(const ScenarioSpec& spec, std::vector<vehicle::VehicleSample>* samples = nullptr);
 
 const char* outcomeName(CheckSpec::Outcome o);
 
