@@ -84,6 +84,14 @@ bench_table() {
       [ "$f" = kinematic ] && label="$v.toml, \`--fidelity kinematic\`"
       echo "| $label | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
     done
+    # Telemetry at every step (a CSV row of 52 columns per 10 ms step): its
+    # cost over the physics, the sample and the row together.
+    irOut() {
+      valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out.$1" "$build/app/bdfcar" run \
+        assets/scenarios/jturn.toml --vehicle assets/vehicles/paper.toml --duration "$1" --out "$tmp/out.$1.csv" 2>&1 |
+        awk '/Collected/ { print $4 }'
+    }
+    echo "| paper.toml with \`--out\` (a telemetry row every step) | $(( ($(irOut 6) - $(irOut 1)) / 500 )) |"
     echo
     echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"
     echo "BdfIntegrator::step over the run, settling included; \`--toggle-collect\` on that function):"

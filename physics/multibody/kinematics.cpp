@@ -53,9 +53,14 @@ void tabulatedPose(const Model& model, const Body& b, const double* c, Data& d, 
   SplineGrid::Sample& s = d.tableSamples[b.table];
   table.grid.eval(c[0], b.nv > 1 ? c[1] : 0.0, s);
   const double psi = s.f[3], phi = s.f[4], theta = s.f[5];
-  R.noalias() = table.rest * (rotZ(psi) * rotX(phi) * rotY(theta));
-  t = Vec3(s.f[0], s.f[1], s.f[2]);
+  const double sp = std::sin(psi), cp = std::cos(psi);
   const double sf = std::sin(phi), cf = std::cos(phi), st = std::sin(theta), ct = std::cos(theta);
+  Mat3 M;  // Rz(psi) Rx(phi) Ry(theta), from the sines and cosines once
+  M << cp * ct - sp * sf * st, -sp * cf, cp * st + sp * sf * ct,  //
+      sp * ct + cp * sf * st, cp * cf, sp * st - cp * sf * ct,    //
+      -cf * st, sf, cf * ct;
+  R.noalias() = table.rest * M;
+  t = Vec3(s.f[0], s.f[1], s.f[2]);
   Mat3 E, Ephi = Mat3::Zero(), Etheta = Mat3::Zero();
   E << -st * cf, ct, 0, sf, 0, 1, ct * cf, st, 0;
   Ephi.col(0) << st * sf, cf, -ct * sf;
