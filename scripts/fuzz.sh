@@ -82,6 +82,10 @@ for t in "${targets[@]}"; do
   [ "$rc" -eq 0 ] || status=1
   line="$t: ${execs:-?} executions, ${rate:-?} exec/s, $found finding(s), exit $rc"
   summary+=("$line")
+  # The latest run of each target, for docs/RESULTS.md (scripts/report.sh).
+  touch "$build/fuzz-summary.txt"
+  { grep -v "^$t: " "$build/fuzz-summary.txt" || true; echo "$line ($(date -u +%F))"; } | sort > "$build/fuzz-summary.new"
+  mv "$build/fuzz-summary.new" "$build/fuzz-summary.txt"
   echo "fuzz: $line"
   [ "$rc" -eq 0 ] || grep -E 'ERROR|FINDING|SUMMARY|Test unit written' "$log" | head -5 | sed 's/^/  /'
 done

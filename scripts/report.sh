@@ -180,7 +180,12 @@ bench_table() {
   cat "$root/build-asan/sanitize-summary.txt" 2> /dev/null || echo "(not run on this machine: bash scripts/sanitize.sh)"
   echo '```'
   echo
-  echo "Fuzzing: executions per target and findings in docs/sanitizers-and-fuzzing.md."
+  echo "The latest libFuzzer run of each target on this machine (1 s timeouts, ASan + UBSan; findings and"
+  echo "their fixes in docs/sanitizers-and-fuzzing.md):"
+  echo
+  echo '```'
+  cat "$root/build-fuzz/fuzz-summary.txt" 2> /dev/null || echo "(not run on this machine: bash scripts/fuzz.sh)"
+  echo '```'
   echo
 } >> "$out"
 
