@@ -86,6 +86,7 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   h.yawRate = sample_.yawRate;
   h.realTimeFactor = realTimeFactor;
   h.stepTime = stepSeconds;
+  h.model = vehicle::fidelityName(sim_->vehicle().fidelity);
   h.throttle = sim_->lastInput().throttle;
   h.brake = sim_->lastInput().brake;
   if (const auto c = run_->course()) {

@@ -63,6 +63,7 @@ struct HudInfo {
   double throttle = 0.0, brake = 0.0;  // 0..1
   int coneHits = -1;                // -1 = not on a cone course
   double courseTime = -1.0;         // s, -1 = not timing
+  std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)
   std::string message;              // status line (paused, recording, diverged, ...)
 };
 
