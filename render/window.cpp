@@ -3,6 +3,8 @@
 #include <GL/gl.h>
 #include <SDL.h>
 
+#include <cstdlib>
+
 #include "render/embedded_viewer.h"
 #include "render/gl_check.h"
 #include "render/png_writer.h"
@@ -47,6 +49,16 @@ Frame readBackBuffer(int width, int height) {
 Window::Window(Scene& scene, const WindowOptions& options) : impl_(std::make_unique<Impl>(scene.impl())) {
   if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0)
     throw RenderError(std::string("SDL2: cannot initialise video: ") + SDL_GetError());
+  // With no display server SDL falls back to a driver that draws where nobody
+  // sees it: a drive would run on, unseen. Unless that driver was asked for
+  // (SDL_VIDEODRIVER, as the window tests do), say so instead.
+  const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+  if ((driver == "offscreen" || driver == "dummy") && !std::getenv("SDL_VIDEODRIVER")) {
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    throw RenderError("no display: neither DISPLAY nor WAYLAND_DISPLAY reaches a display server (SDL2 fell back to "
+                      "its '" + driver + "' driver, where nobody would see the window); `bdfcar demo` and `bdfcar "
+                      "render` draw frames without a display, SDL_VIDEODRIVER=offscreen runs the window anyway");
+  }
   Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
   if (options.fullscreen) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
   for (int samples : {options.multisample, 0}) {
