@@ -10,6 +10,7 @@
 #include "integrator/bdf.h"
 #include "mechanisms.h"
 #include "multibody/multibody_dae.h"
+#include "saturating_wheel.h"
 
 namespace {
 std::atomic<long> gAllocations{0};
@@ -63,4 +64,22 @@ TEST(RealTime, BdfStepAllocatesNothingAfterTheFirstStep) {
   auto* probe = new int(3);
   EXPECT_EQ(gAllocations.load() - before, 1);
   delete probe;
+}
+
+TEST(RealTime, BdfStepRescuesAllocateNothing) {
+  // Stalled steps: fast-column refreshes, LU-only solves and damped Newton
+  // (the rough road's path) inside the counted window.
+  test::SaturatingWheel dae({1}, 0.4);
+  integ::BdfIntegrator bdf(dae, integ::BdfOptions{});
+  integ::Vec q = integ::Vec::Zero(3), v(3);
+  v << 15.0, 15.0 / test::SaturatingWheel::kR, 0.0;
+  integ::Message msg;
+  ASSERT_EQ(bdf.initialize(0, q, v, msg), integ::EvalStatus::Ok);
+  ASSERT_TRUE(bdf.step(0.01).ok());
+  const integ::Counters c0 = bdf.counters();
+  const long before = gAllocations.load();
+  for (int i = 0; i < 50; ++i) ASSERT_TRUE(bdf.step(0.01).ok());
+  EXPECT_EQ(gAllocations.load() - before, 0) << "heap allocations in 50 steps";
+  EXPECT_GE(bdf.counters().columnRefreshes - c0.columnRefreshes, 10) << "the window must include rescues";
+  EXPECT_GE(bdf.counters().rescues - c0.rescues, 3);
 }

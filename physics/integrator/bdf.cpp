@@ -44,12 +44,20 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   J_.setZero(nc, nv);
   A_.setZero(n, n);
   Ainv_.setZero(n, n);
-  for (Vec* x : {&xiQ_, &xiV_, &dPred_, &vPred_, &aPred_, &d_, &v_, &a_, &rate_, &rhoQ_, &rhoV_, &tmpV_, &dq_,
-                 &dv_, &da_})
+  for (Vec* x : {&xiQ_, &xiV_, &dPred_, &vPred_, &aPred_, &d_, &v_, &a_, &d0_, &v0_, &a0_, &rate_, &rhoQ_, &rhoV_,
+                 &tmpV_, &dq_, &dv_, &da_})
     x->setZero(nv);
-  for (Vec* x : {&lamPred_, &lam_, &c_, &dlam_}) x->setZero(nc);
+  for (Vec* x : {&lamPred_, &lam_, &lam0_, &c_, &dlam_}) x->setZero(nc);
   q_.setZero(n_.nq);
   rhs_.setZero(n);
+  const int m = static_cast<int>(dae_.fastColumns().size());
+  fastBaseFv_.setZero(nv, m);
+  U_.setZero(nv, m);
+  Z_.setZero(n, m);
+  S_.setZero(m, m);
+  sLu_ = Eigen::PartialPivLU<Mat>(m);
+  w_.setZero(m);
+  w2_.setZero(m);
   sol_.setZero(n);
   e_.setZero(n);
   r_.resize(n_);
@@ -127,7 +135,7 @@ StepReport BdfIntegrator::step(double h) {
 // recursively down to h / 2^kMaxSplits. The history holds node times, so
 // uneven steps are exact BDF steps.
 StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) {
-  StepReport rep = substep(h, jacobianDue);
+  StepReport rep = substep(h, jacobianDue, depth >= kMaxSplits);
   const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
   if (rep.ok() || !retry || depth >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
   ++counters_.splits;
@@ -165,6 +173,56 @@ void BdfIntegrator::factorize(double hp) {
   Ainv_.noalias() = lu_.inverse();
   ++counters_.factorizations;
   factorizedHPrime_ = hp;
+  const std::vector<int>& fast = dae_.fastColumns();
+  for (int k = 0; k < static_cast<int>(fast.size()); ++k) fastBaseFv_.col(k) = dx_.Fv.col(fast[k]);
+  lowRank_ = false;
+}
+
+// The fast columns of F_v re-evaluated at the iterate; the factorized matrix
+// follows by a rank-m update (Woodbury): with U the change of those columns
+// of A (h' dF_v, m of them) and E the unit vectors of their indices,
+//   (A + U E^T)^-1 = A^-1 - Z (I + E^T Z)^-1 E^T A^-1,   Z = A^-1 U,
+// so a refresh costs 1 + m residuals and an n x n x m product, no LU of A.
+EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, Message& msg) {
+  ScopedTimer timer(opt_.timing, timers_.jacobian);
+  dae_.retract(node(0).q, d_, q_);
+  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, dx_, ws_, counters_.jacobianResiduals);
+  if (st != EvalStatus::Ok) {
+    msg = ws_.msg;
+    return st;
+  }
+  ++counters_.columnRefreshes;
+  if (std::abs(hp - factorizedHPrime_) > 1e-9 * hp) {
+    factorize(hp);  // a new step size: the whole matrix anyway
+    return EvalStatus::Ok;
+  }
+  const std::vector<int>& fast = dae_.fastColumns();
+  const int m = static_cast<int>(fast.size()), nv = n_.nv;
+  for (int k = 0; k < m; ++k) {
+    U_.col(k) = hp * (dx_.Fv.col(fast[k]) - fastBaseFv_.col(k));
+    A_.col(fast[k]).head(nv) = Fa_.col(fast[k]) + hp * dx_.Fv.col(fast[k]) + (hp * hp) * dx_.Fq.col(fast[k]);
+  }
+  Z_.noalias() = Ainv_.leftCols(nv) * U_;
+  for (int k = 0; k < m; ++k) S_.row(k) = Z_.row(fast[k]);
+  S_ += Mat::Identity(m, m);
+  sLu_.compute(S_);
+  // A nearly singular update (the refreshed matrix itself near singular):
+  // factorize the whole matrix instead.
+  if (!(std::abs(sLu_.determinant()) > 1e-12)) {
+    factorize(hp);
+    return EvalStatus::Ok;
+  }
+  lowRank_ = true;
+  return EvalStatus::Ok;
+}
+
+// x -= Z (I + E^T Z)^-1 E^T x: the Woodbury correction of x = A^-1 b.
+void BdfIntegrator::applyLowRankUpdate(Vec& x) {
+  if (!lowRank_) return;
+  const std::vector<int>& fast = dae_.fastColumns();
+  for (int k = 0; k < static_cast<int>(fast.size()); ++k) w_(k) = x(fast[k]);
+  w2_ = sLu_.solve(w_);
+  x.noalias() -= Z_ * w2_;
 }
 
 double BdfIntegrator::correctionNorm() const {
@@ -185,7 +243,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
                                                    bool toTolerance, StepReport& rep) {
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
-  const int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
+  int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
   double prevNorm = 0;
   for (int it = 1; it <= maxIt; ++it) {
     EvalStatus st;
@@ -212,6 +270,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     rhs_.head(nv).noalias() -= Fa_ * tmpV_;
     rhs_.tail(nc) = -r_.phi;
     sol_.noalias() = Ainv_ * rhs_;
+    applyLowRankUpdate(sol_);
     dq_ = sol_.head(nv);
     dlam_ = sol_.tail(nc) / (hp * hp);
     // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
@@ -222,6 +281,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     c_.noalias() -= dx_.phiDotQ * dq_;
     c_ -= r_.phiDot;
     e_.noalias() = Ainv_.rightCols(nc) * c_;
+    applyLowRankUpdate(e_);
     dv_ += e_.head(nv);
     // (3.14): the same for the accelerations and g + g_q dq + g_v dv + Phi_q da = 0.
     da_ = cj * (dv_ + rhoV_);
@@ -230,6 +290,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     c_.noalias() -= dx_.phiDDotV * dv_;
     c_ -= r_.phiDDot;
     e_.noalias() = Ainv_.rightCols(nc) * c_;
+    applyLowRankUpdate(e_);
     da_ += e_.head(nv);
     counters_.solves += 3;
     ++counters_.newtonIterations;
@@ -240,6 +301,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     lam_ += dlam_;
 
     const double norm = correctionNorm();
+    if (it == 1) firstCorrection_ = norm;
     rep.iterations += 1;
     rep.correction = norm;
     rep.contraction = it > 1 ? norm / prevNorm : 0.0;
@@ -256,6 +318,12 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       if (toTolerance) return NewtonOutcome::NotContracting;
     }
     prevNorm = norm;
+    // A fixed count that ends far above tolerance (an impact) but still
+    // contracting goes on while it contracts: chord iterations (a residual
+    // each) are the cheapest way there.
+    if (opt_.refreshWhenNotContracting && !toTolerance && it == maxIt && it > 1 && it < opt_.maxNewtonIterations && norm > opt_.largeCorrection &&
+        rep.contraction < opt_.contractionLimit)
+      ++maxIt;
   }
   if (toTolerance) {
     rep.message.set("Newton did not converge in %d iterations at t = %.6g s (correction %.3g)", maxIt, t,
@@ -269,32 +337,40 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
   return stalled ? NewtonOutcome::NotContracting : NewtonOutcome::Converged;
 }
 
-
-
-// The rescue of a step the fixed count could not converge: full Newton (the
-// Jacobian re-evaluated at every iterate, since a tyre may have moved between
-// its linear and sliding regimes, where a Jacobian from the other regime makes
-// the chord iteration cycle), halving a correction that does not reduce the
-// residual's correction norm.
-BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoefficients& c, StepReport& rep) {
+// Newton on to tolerance with the iteration matrix re-evaluated at every
+// iterate (a tyre may have moved between its linear and sliding regimes,
+// where a Jacobian from the other regime makes the chord iteration cycle):
+// the fast columns alone, or the whole Jacobian. A correction that does not
+// reduce the correction norm is halved.
+BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoefficients& c, JacobianScope scope,
+                                                       StepReport& rep) {
   double prev = rep.correction;
   for (int it = 0; it < opt_.maxNewtonIterations; ++it) {
-    dae_.retract(node(0).q, d_, q_);
-    if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) {
+    EvalStatus st;
+    if (scope == JacobianScope::FastColumns) {
+      st = refreshFastColumns(t, c.hPrime, rep.message);
+    } else {
+      dae_.retract(node(0).q, d_, q_);
+      st = evaluateJacobian(t, rep.message);
+      if (st == EvalStatus::Ok) factorize(c.hPrime);
+    }
+    if (st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
       rep.recoverable = st == EvalStatus::Recoverable;
       return NewtonOutcome::Failed;
     }
-    factorize(c.hPrime);
-    const Vec d0 = d_, v0 = v_, a0 = a_, l0 = lam_;
+    d0_ = d_;
+    v0_ = v_;
+    a0_ = a_;
+    lam0_ = lam_;
     const NewtonOutcome one = newton(t, c, 1, false, rep);
     if (one == NewtonOutcome::Failed) return one;
     // Damping: a correction larger than the last one is halved (up to 4 times).
     for (int halving = 0; halving < 4 && rep.correction > prev && prev > 1.0; ++halving) {
-      d_ = 0.5 * (d_ + d0);
-      v_ = 0.5 * (v_ + v0);
-      a_ = 0.5 * (a_ + a0);
-      lam_ = 0.5 * (lam_ + l0);
+      d_ = 0.5 * (d_ + d0_);
+      v_ = 0.5 * (v_ + v0_);
+      a_ = 0.5 * (a_ + a0_);
+      lam_ = 0.5 * (lam_ + lam0_);
       rep.correction *= 0.5;
     }
     if (rep.correction <= 1.0) return NewtonOutcome::Converged;
@@ -305,7 +381,70 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
   return NewtonOutcome::NotContracting;
 }
 
-StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
+void BdfIntegrator::startFromPredictor() {
+  d_ = dPred_;
+  v_ = vPred_;
+  a_ = aPred_;
+  lam_ = lamPred_;
+}
+
+// A step whose fixed count stalled. With fast columns (Dae::fastColumns):
+// (a) those columns re-evaluated at the stalled iterate (at the predictor if
+// the attempt got nowhere) and the fixed count again; (b) Newton on to
+// tolerance, the fast columns re-evaluated at every iterate; failing that the
+// step is split, and only at the last split (c) the whole Jacobian at the
+// predictor and Newton on to tolerance with it re-evaluated at every iterate.
+// A few residuals and a rank-m update per iterate instead of 1 + 2 nv
+// residuals and an LU: the bounded step of a rough road. Without fast
+// columns: the whole Jacobian at the predictor and the fixed count again,
+// then Newton on to tolerance with the whole Jacobian at every iterate.
+BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort,
+                                                    StepReport& rep) {
+  auto attempt = [&] {
+    rep.status = StepStatus::Ok;
+    rep.recoverable = false;
+    rep.iterations = 0;
+    return newton(t, c, opt_.newtonIterations, opt_.newtonIterations <= 0, rep);
+  };
+  auto failed = [&](EvalStatus st) {
+    rep.status = StepStatus::EvaluationFailed;
+    rep.recoverable = st == EvalStatus::Recoverable;
+    return NewtonOutcome::Failed;
+  };
+  NewtonOutcome out = NewtonOutcome::NotContracting;
+  if (!dae_.fastColumns().empty()) {
+    // (a)
+    if (!(rep.correction < firstCorrection_)) startFromPredictor();
+    ++counters_.refreshes;
+    if (const EvalStatus st = refreshFastColumns(t, c.hPrime, rep.message); st != EvalStatus::Ok) return failed(st);
+    out = attempt();
+    if (out != NewtonOutcome::NotContracting) return out;
+    // (b)
+    ++counters_.rescues;
+    out = fullNewton(t, c, JacobianScope::FastColumns, rep);
+    if (out != NewtonOutcome::NotContracting) return out;
+    if (!lastResort) return out;  // split: a shorter step is the cheaper cure
+    // (c)
+    startFromPredictor();
+    dae_.retract(node(0).q, d_, q_);
+    if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) return failed(st);
+    factorize(c.hPrime);
+    return fullNewton(t, c, JacobianScope::Whole, rep);
+  }
+  if (!fresh) {  // stale Jacobian: the whole Jacobian at the predictor, the fixed count again
+    ++counters_.refreshes;
+    startFromPredictor();
+    dae_.retract(node(0).q, d_, q_);
+    if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) return failed(st);
+    factorize(c.hPrime);
+    out = attempt();
+    if (out != NewtonOutcome::NotContracting) return out;
+  }
+  ++counters_.rescues;
+  return fullNewton(t, c, JacobianScope::Whole, rep);
+}
+
+StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort) {
   StepReport rep;
   const double tNew = node(0).t + h;
   const int k = std::min(opt_.order, count_);
@@ -343,48 +482,34 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue) {
   dae_.retract(node(0).q, dPred_, q_);
   dae_.beginStep(tNew, q_, vPred_);
 
-  // Attempt 1 with the current Jacobian; when Newton stalls: attempt 2 with a
-  // fresh Jacobian from the predictor; then iterate on to tolerance.
+  // The fixed count from the predictor with the Jacobian as it is (evaluated
+  // here when due); when it stalls, recover().
+  startFromPredictor();
+  bool fresh = false;
+  if (jacobianDue || !haveBlocks_) {
+    dae_.retract(node(0).q, d_, q_);
+    if (const EvalStatus st = evaluateJacobian(tNew, rep.message); st != EvalStatus::Ok) {
+      rep.status = StepStatus::EvaluationFailed;
+      rep.recoverable = st == EvalStatus::Recoverable;
+      return rep;
+    }
+    fresh = true;
+    rep.jacobianEvaluated = true;
+  }
+  // Times accumulate round-off, so h' of equal steps differs in the last
+  // bits: refactor only for a real change of step or order.
+  if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
+  rep.status = StepStatus::Ok;
   const bool fixedCount = opt_.newtonIterations > 0;
-  for (;;) {
-    bool fresh = false;
-    d_ = dPred_;
-    v_ = vPred_;
-    a_ = aPred_;
-    lam_ = lamPred_;
-    if (jacobianDue || !haveBlocks_) {
-      dae_.retract(node(0).q, d_, q_);
-      if (const EvalStatus st = evaluateJacobian(tNew, rep.message); st != EvalStatus::Ok) {
-        rep.status = StepStatus::EvaluationFailed;
-        rep.recoverable = st == EvalStatus::Recoverable;
-        return rep;
-      }
-      fresh = true;
-      rep.jacobianEvaluated = true;
-    }
-    // Times accumulate round-off, so h' of equal steps differs in the last
-    // bits: refactor only for a real change of step or order.
-    if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
-    rep.status = StepStatus::Ok;
-    rep.recoverable = false;
-    rep.iterations = 0;
-    NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
-    if (out == NewtonOutcome::Failed) return rep;
-    if (out == NewtonOutcome::Converged || !opt_.refreshWhenNotContracting) break;
-    if (!fresh) {  // stale Jacobian: refresh and redo the step
-      ++counters_.refreshes;
-      jacobianDue = true;
-      continue;
-    }
-    // Fresh Jacobian and still stalled: full Newton to tolerance from here.
-    ++counters_.rescues;
-    out = fullNewton(tNew, c, rep);
+  NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
+  if (out == NewtonOutcome::Failed) return rep;
+  if (out == NewtonOutcome::NotContracting && opt_.refreshWhenNotContracting) {
+    out = recover(tNew, c, fresh, lastResort, rep);
     if (out == NewtonOutcome::Failed) return rep;
     if (out != NewtonOutcome::Converged) {
       rep.status = StepStatus::Diverged;
       return rep;
     }
-    break;
   }
 
   // Accept: the new node becomes node(0).

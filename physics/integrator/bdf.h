@@ -9,7 +9,8 @@
 // tangent directions and impose the velocity / acceleration constraints in
 // the others. The factorization is kept as an explicit inverse, so the three
 // solves are matrix-vector products (the last two use only its constraint
-// columns). The Jacobian blocks are reused for jacobianEvery steps.
+// columns). The Jacobian blocks are reused for jacobianEvery steps; when
+// Newton stalls, the DAE's fast columns are refreshed first (recover()).
 #pragma once
 
 #include <Eigen/LU>
@@ -75,14 +76,21 @@ class BdfIntegrator final : public Integrator {
 
   const SolutionPoint& node(int i) const { return hist_[(head_ + i) % kHistory]; }
   SolutionPoint& node(int i) { return hist_[(head_ + i) % kHistory]; }
-  StepReport substep(double h, bool jacobianDue);
+  // lastResort: the deepest split, where a stalled step may evaluate the
+  // whole Jacobian at every iterate.
+  StepReport substep(double h, bool jacobianDue, bool lastResort = false);
   static constexpr int kMaxSplits = 4;
   StepReport splitOnFailure(double h, bool jacobianDue, int depth);
   EvalStatus evaluateJacobian(double t, Message& msg);
   void factorize(double hPrime);
+  EvalStatus refreshFastColumns(double t, double hPrime, Message& msg);
+  void applyLowRankUpdate(Vec& x);
+  void startFromPredictor();
   enum class NewtonOutcome { Converged, NotContracting, Failed };
   NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep);
-  NewtonOutcome fullNewton(double t, const BdfCoefficients& c, StepReport& rep);
+  enum class JacobianScope { FastColumns, Whole };
+  NewtonOutcome fullNewton(double t, const BdfCoefficients& c, JacobianScope scope, StepReport& rep);
+  NewtonOutcome recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort, StepReport& rep);
   double correctionNorm() const;
 
   Dae& dae_;
@@ -104,12 +112,21 @@ class BdfIntegrator final : public Integrator {
   Mat Fa_, J_;             // (nv x nv), (nc x nv)
   Mat A_, Ainv_;           // (nv+nc)^2
   Eigen::PartialPivLU<Mat> lu_;
+  // Refreshed fast columns as a rank-m update of the factorized matrix
+  // (refreshFastColumns): their F_v columns when it was factorized, the
+  // change U, Z = A^-1 U and the LU of I + E^T Z.
+  bool lowRank_ = false;
+  Mat fastBaseFv_, U_, Z_, S_;
+  Eigen::PartialPivLU<Mat> sLu_;
+  Vec w_, w2_;
+  double firstCorrection_ = 0;  // the first correction norm of the last Newton attempt
 
   // Step work vectors.
   std::array<Vec, kMaxBdfOrder + 2> delta_;  // local coordinates of past nodes around q_{n-1}
   Vec xiQ_, xiV_;
   Vec dPred_, vPred_, aPred_, lamPred_;
   Vec d_, q_, v_, a_, lam_;                  // Newton iterate
+  Vec d0_, v0_, a0_, lam0_;                  // the iterate before a damped full Newton correction
   Vec rate_, rhoQ_, rhoV_, tmpV_, rhs_, sol_, c_, e_;
   Vec dq_, dv_, da_, dlam_;
   Residual r_;

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdio>
+#include <vector>
 
 namespace bdfcar::integ {
 
@@ -76,6 +77,17 @@ class Dae {
   // when withConstraints (finite-difference columns need F alone).
   virtual EvalStatus residual(double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                               Residual& out, bool withConstraints, Message& msg) = 0;
+
+  // Velocity coordinates whose F_v columns change much faster with the state
+  // than the rest of the Jacobian (a wheel spin under its tyre's slip
+  // stiffness, which falls tenfold when the tyre saturates; the tyre depends
+  // on the spin rate, not the spin angle). When Newton stalls, the BDF
+  // integrator re-evaluates these columns alone (1 + 1 per column residuals)
+  // before it pays for the whole Jacobian. Empty: no such columns.
+  virtual const std::vector<int>& fastColumns() const {
+    static const std::vector<int> none;
+    return none;
+  }
 
   // Optional analytic blocks; return false to get finite differences.
   virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }

@@ -69,6 +69,23 @@ void StateDerivatives::resize(const DaeSizes& s) {
   phiDDotV.setZero(s.nc, s.nv);
 }
 
+namespace {
+// Column i of F_v and g_v by a forward difference from ws.r0, the residual at
+// (q, v, a, lambda); ws.v holds v.
+EvalStatus velocityColumn(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda, int i,
+                          StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  const double h = velocityIncrement(v(i));
+  ws.v(i) = v(i) + h;
+  const EvalStatus st = dae.residual(t, q, ws.v, a, lambda, ws.r1, true, ws.msg);
+  ws.v(i) = v(i);
+  ++count;
+  if (st != EvalStatus::Ok) return st;
+  out.Fv.col(i) = (ws.r1.F - ws.r0.F) / h;
+  out.phiDDotV.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / h;
+  return EvalStatus::Ok;
+}
+}  // namespace
+
 EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                                  StateDerivatives& out, BlockWorkspace& ws, long& count) {
   EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
@@ -79,22 +96,28 @@ EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v,
   for (int i = 0; i < v.size(); ++i) {
     ws.dq(i) = kFdStep;
     dae.retract(q, ws.dq, ws.q);
+    ws.dq(i) = 0;
     st = dae.residual(t, ws.q, v, a, lambda, ws.r1, true, ws.msg);
     ++count;
     if (st != EvalStatus::Ok) return st;
     out.Fq.col(i) = (ws.r1.F - ws.r0.F) / kFdStep;
     out.phiDotQ.col(i) = (ws.r1.phiDot - ws.r0.phiDot) / kFdStep;
     out.phiDDotQ.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / kFdStep;
-    ws.dq(i) = 0;
-
-    const double h = velocityIncrement(v(i));
-    ws.v(i) = v(i) + h;
-    st = dae.residual(t, q, ws.v, a, lambda, ws.r1, true, ws.msg);
-    ++count;
+    st = velocityColumn(dae, t, q, v, a, lambda, i, out, ws, count);
     if (st != EvalStatus::Ok) return st;
-    out.Fv.col(i) = (ws.r1.F - ws.r0.F) / h;
-    out.phiDDotV.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / h;
-    ws.v(i) = v(i);
+  }
+  return EvalStatus::Ok;
+}
+
+EvalStatus fastVelocityColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                               StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
+  ++count;
+  if (st != EvalStatus::Ok) return st;
+  ws.v = v;
+  for (const int i : dae.fastColumns()) {
+    st = velocityColumn(dae, t, q, v, a, lambda, i, out, ws, count);
+    if (st != EvalStatus::Ok) return st;
   }
   return EvalStatus::Ok;
 }

@@ -47,7 +47,8 @@ struct Counters {
   long newtonIterations = 0;
   long residuals = 0;         // residual evaluations in Newton iterations / explicit stages
   long jacobianResiduals = 0; // residual evaluations spent on finite-difference Jacobians
-  long jacobians = 0;         // Jacobian block evaluations
+  long jacobians = 0;         // Jacobian block evaluations (the whole Jacobian)
+  long columnRefreshes = 0;   // re-evaluations of the DAE's fast columns alone (Dae::fastColumns)
   long factorizations = 0;    // LU factorizations of the iteration matrix
   long solves = 0;            // solves with a factorized matrix (3 per BDF Newton iteration)
   long refreshes = 0;         // Jacobians forced because Newton stopped contracting

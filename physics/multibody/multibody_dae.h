@@ -4,6 +4,7 @@
 // (tyres, drive torques) come in through ForceProvider.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "integrator/dae.h"
@@ -41,6 +42,9 @@ class MultibodyDae final : public integ::Dae {
   void addForceProvider(ForceProvider* p) { providers_.push_back(p); }
   void setDriverSignal(int slot, const TimeSignal* s) { data_.driverSignals.at(slot) = s; }
   void setLimits(const StateLimits& l) { limits_ = l; }
+  // Velocity coordinates whose Jacobian columns change fast (integ::Dae::fastColumns).
+  void setFastColumns(std::vector<int> columns) { fastColumns_ = std::move(columns); }
+  const std::vector<int>& fastColumns() const override { return fastColumns_; }
   const Model& model() const { return model_; }
   Data& data() { return data_; }
   const Data& data() const { return data_; }
@@ -67,6 +71,7 @@ class MultibodyDae final : public integ::Dae {
   Data data_;
   std::vector<ForceProvider*> providers_;
   StateLimits limits_;
+  std::vector<int> fastColumns_;
   integ::Vec zeroV_;
 };
 

@@ -112,6 +112,13 @@ Simulation::Simulation(std::shared_ptr<const World> world)
   forces_ = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
   dae_ = std::make_unique<mb::MultibodyDae>(veh.model);
   dae_->addForceProvider(forces_.get());
+  // A wheel's spin column of the Jacobian is dominated by its tyre's slip
+  // stiffness, which collapses when the tyre saturates (a rough road flips
+  // a tyre between the regimes from one step to the next): the integrator
+  // refreshes these columns alone when Newton stalls.
+  std::vector<int> spins;
+  for (const vehicle::WheelLayout& w : veh.layout.wheels) spins.push_back(w.spinV);
+  dae_->setFastColumns(std::move(spins));
   // Every driver of a vehicle model is the rack's: the rack itself and, in a
   // kinematic model, the rack travel of each steered corner's table.
   for (int slot = 0; slot < veh.model.nDrivers; ++slot) dae_->setDriverSignal(slot, &rack_);
