@@ -84,14 +84,22 @@ bench_table() {
       [ "$f" = kinematic ] && label="$v.toml, \`--fidelity kinematic\`"
       echo "| $label | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
     done
-    # Telemetry at every step (a CSV row of 52 columns per 10 ms step): its
-    # cost over the physics, the sample and the row together.
+    # Telemetry at every step (a CSV row of 52 columns per 10 ms step): the
+    # stepping thread pays for the sample, the writer thread formats the row;
+    # each thread's instructions (callgrind --separate-threads: -01 is the
+    # main thread, -02 the writer).
     irOut() {
-      valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out.$1" "$build/app/bdfcar" run \
-        assets/scenarios/jturn.toml --vehicle assets/vehicles/paper.toml --duration "$1" --out "$tmp/out.$1.csv" 2>&1 |
-        awk '/Collected/ { print $4 }'
+      valgrind --tool=callgrind --separate-threads=yes --callgrind-out-file="$tmp/cg.out.$1" "$build/app/bdfcar" run \
+        assets/scenarios/jturn.toml --vehicle assets/vehicles/paper.toml --duration "$1" --out "$tmp/out.$1.csv" \
+        > /dev/null 2>&1
+      for thread in 01 02; do
+        callgrind_annotate "$tmp/cg.out.$1-$thread" 2> /dev/null | awk '/PROGRAM TOTALS/ { gsub(",", "", $1); print $1 }'
+      done
     }
-    echo "| paper.toml with \`--out\` (a telemetry row every step) | $(( ($(irOut 6) - $(irOut 1)) / 500 )) |"
+    read -r main6 writer6 <<< "$(irOut 6 | xargs)"
+    read -r main1 writer1 <<< "$(irOut 1 | xargs)"
+    echo "| paper.toml with \`--out\` (a telemetry row every step): the stepping thread | $(( (main6 - main1) / 500 )) |"
+    echo "| ... and the telemetry writer's thread (formatting the row) | $(( (writer6 - writer1) / 500 )) |"
     echo
     echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"
     echo "BdfIntegrator::step over the run, settling included; \`--toggle-collect\` on that function):"

@@ -1,6 +1,7 @@
 #include "scenario/telemetry.h"
 
 #include <charconv>
+#include <chrono>
 #include <stdexcept>
 
 #include "config/units.h"
@@ -17,11 +18,105 @@ const char* TelemetryWriter::header() {
          "segment";
 }
 
-TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v) : file_(path), v_(v) {
+TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v)
+    : file_(path), v_(v), queue_(kQueueRows) {
   file_.append(std::string(header()) + "\n");
+  thread_ = std::thread([this] { writerLoop(); });
+}
+
+TelemetryWriter::~TelemetryWriter() {
+  try {
+    close();
+  } catch (const OutputError&) {
+    // Reported by an explicit close(); a destructor must not throw.
+  }
 }
 
 void TelemetryWriter::write(const vehicle::VehicleSample& s, const TelemetryInputs& in) {
+  std::unique_lock lock(mutex_);
+  rethrowWriterError();
+  if (closed_) throw OutputError(file_.path() + ": written after it was closed");
+  // Full: wait for the writer (a disk slower than the simulation), never drop.
+  while (size_ == kQueueRows && !error_) {
+    wake_.notify_one();
+    written_.wait(lock);
+  }
+  rethrowWriterError();
+  Row& r = queue_[(head_ + size_) % kQueueRows];
+  r.sample = s;
+  r.inputs = in;
+  ++size_;
+  // The writer sleeps between batches (writerLoop): wake it every kBatchRows
+  // rows, so that a row costs no system call and a run faster than real time
+  // is formatted alongside, not after.
+  if (size_ % kBatchRows == 0) wake_.notify_one();
+}
+
+void TelemetryWriter::writerLoop() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (size_ == 0) {
+      written_.notify_all();
+      if (stop_) return;
+      wake_.wait_for(lock, std::chrono::milliseconds(20));
+      continue;
+    }
+    const Row& r = queue_[head_];
+    busy_ = true;
+    lock.unlock();
+    try {
+      formatRow(r);
+    } catch (...) {
+      lock.lock();
+      busy_ = false;
+      error_ = std::current_exception();
+      size_ = 0;  // the rows after a failed write are lost with it; the caller is told
+      written_.notify_all();
+      return;
+    }
+    lock.lock();
+    busy_ = false;
+    head_ = (head_ + 1) % kQueueRows;
+    --size_;
+    if (size_ == kQueueRows - 1) written_.notify_all();  // a waiting write() may go on
+  }
+}
+
+void TelemetryWriter::waitUntilWritten(std::unique_lock<std::mutex>& lock) {
+  while ((size_ > 0 || busy_) && !error_) {
+    wake_.notify_one();
+    written_.wait(lock);
+  }
+}
+
+// Once the writer thread failed, every later call says so (it has stopped).
+void TelemetryWriter::rethrowWriterError() {
+  if (error_) std::rethrow_exception(error_);
+}
+
+void TelemetryWriter::flush() {
+  std::unique_lock lock(mutex_);
+  waitUntilWritten(lock);
+  rethrowWriterError();
+  file_.flush();  // the writer thread is idle while the lock is held
+}
+
+void TelemetryWriter::close() {
+  {
+    std::unique_lock lock(mutex_);
+    if (closed_) return;
+    waitUntilWritten(lock);
+    closed_ = stop_ = true;
+    wake_.notify_one();
+  }
+  thread_.join();
+  rethrowWriterError();  // the writer thread has ended: no lock needed
+  file_.close();
+}
+
+void TelemetryWriter::formatRow(const Row& r) {
+  const vehicle::VehicleSample& s = r.sample;
+  const TelemetryInputs& in = r.inputs;
   if (first_) {
     z0_ = s.com.z();
     rack0_ = s.rack;

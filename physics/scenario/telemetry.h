@@ -4,8 +4,13 @@
 // format so that identical runs give identical files.
 #pragma once
 
+#include <condition_variable>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "scenario/row_file.h"
 #include "vehicle/vehicle_builder.h"
@@ -22,25 +27,57 @@ struct TelemetryInputs {
   int segment = 0;              // a drive's segment: +1 at each reset, rewind or divergence reset
 };
 
-// Rows go out whole through a RowFile (row_file.h): flushed at least every
-// second, a write error throws OutputError.
+// Rows are formatted and written by a thread of the writer's own, so that
+// the stepping thread pays for a copy of the sample, not for 52 numbers
+// through to_chars (as much as a third of a step): write() queues the sample
+// and returns; the writer thread formats the rows in order and hands them to
+// a RowFile (row_file.h: whole rows, flushed at least every second). The
+// queue never drops a row: when it is full, write() waits. A write error on
+// the writer thread is thrown as OutputError by the next write(), flush() or
+// close() of the caller. The file's bytes are those of a synchronous writer.
 class TelemetryWriter {
  public:
   // Opens the file (throws OutputError naming it on failure) and writes the header.
   TelemetryWriter(const std::string& path, const vehicle::Vehicle& v);
-  // The first row fixes the references of dz_com_m and rack_m.
+  ~TelemetryWriter();  // drains and closes; a failure there is lost, so call close()
+  TelemetryWriter(const TelemetryWriter&) = delete;
+  TelemetryWriter& operator=(const TelemetryWriter&) = delete;
+
+  // Queues one row; the first row fixes the references of dz_com_m and rack_m.
   void write(const vehicle::VehicleSample& s, const TelemetryInputs& in);
-  // Writes what is buffered; throws OutputError when it cannot.
-  void flush() { file_.flush(); }
-  void close() { file_.close(); }
+  // Waits until every queued row is written, then hands them to the system;
+  // throws OutputError when it cannot.
+  void flush();
+  void close();
   const std::string& path() const { return file_.path(); }
   static const char* header();
 
  private:
+  struct Row {
+    vehicle::VehicleSample sample;
+    TelemetryInputs inputs;
+  };
+  static constexpr std::size_t kQueueRows = 1024, kBatchRows = 32;
+
+  void writerLoop();
+  void formatRow(const Row& r);  // on the writer thread
+  void waitUntilWritten(std::unique_lock<std::mutex>& lock);
+  void rethrowWriterError();
+
   RowFile file_;
   const vehicle::Vehicle& v_;
-  bool first_ = true;
+  bool first_ = true;  // writer thread
   double z0_ = 0, rack0_ = 0;
+
+  std::vector<Row> queue_;  // a ring of kQueueRows
+  std::size_t head_ = 0, size_ = 0;
+  bool busy_ = false;     // the writer thread is formatting a row taken from the queue
+  bool stop_ = false;
+  bool closed_ = false;
+  std::exception_ptr error_;
+  std::mutex mutex_;
+  std::condition_variable wake_, written_;
+  std::thread thread_;
 };
 
 }  // namespace bdfcar::scenario
