@@ -656,6 +656,64 @@ TEST(TerrainAssets, RoughRoadIsRoughOnlyInTheMiddle) {
   EXPECT_LT(rms, 0.02);
 }
 
+TEST(TerrainAssets, PotholeUnderTheRightWheelsOnly) {
+  const auto t = makeTerrain(loadTerrain(assetPath("pothole.toml")));
+  EXPECT_NEAR(heightUnder(*t, 30.4, -2.55), -0.06, kTol);  // right wheel track, in the hole
+  EXPECT_NEAR(heightUnder(*t, 30.4, -0.95), 0.0, kTol);    // left wheel track beside it
+  EXPECT_NEAR(heightUnder(*t, 29.9, -2.55), 0.0, kTol);
+  EXPECT_NEAR(heightUnder(*t, 30.9, -2.55), 0.0, kTol);
+}
+
+TEST(TerrainAssets, WashboardRidgesHaveTheirWavelengthAndHeight) {
+  // height/2 (1 - cos(2 pi (x - 30) / 0.7)) between the fades: crests of
+  // 2 cm at 30 + 0.35 + 0.7 k, troughs of 0 at 30 + 0.7 k; the mesh keeps at
+  // least 8 lines a wavelength, so its chords sit within h/2 (1 - cos(pi/8))
+  // = 0.76 mm of the profile.
+  const auto t = makeTerrain(loadTerrain(assetPath("washboard.toml")));
+  const double chord = 0.01 * (1.0 - std::cos(std::numbers::pi / 8.0));
+  for (int k = 10; k < 200; k += 37) {
+    EXPECT_NEAR(heightUnder(*t, 30.35 + 0.7 * k, -1.75), 0.02, chord) << "crest " << k;
+    EXPECT_NEAR(heightUnder(*t, 30.0 + 0.7 * k, 1.0), 0.0, chord) << "trough " << k;
+  }
+  EXPECT_NEAR(heightUnder(*t, 20.0, -1.75), 0.0, kTol);
+  EXPECT_NEAR(heightUnder(*t, 240.0, -1.75), 0.0, kTol);
+}
+
+TEST(TerrainAssets, MuSplitHasTheSlipperyPatchOnTheRight) {
+  const auto t = makeTerrain(loadTerrain(assetPath("mu_split.toml")));
+  const Hit left = t->castRay({50, -1.0, 1}, {0, 0, -1}, 5), right = t->castRay({50, -2.5, 1}, {0, 0, -1}, 5);
+  ASSERT_TRUE(left.hit && right.hit);
+  EXPECT_DOUBLE_EQ(left.friction, 0.9);
+  EXPECT_DOUBLE_EQ(right.friction, 0.2);
+  EXPECT_NEAR(right.point.z(), 0.0, kTol);  // the patch changes the friction, not the surface
+}
+
+TEST(TerrainFile, BadFrictionPatchesAndCorrugationsNameTheirKey) {
+  const std::string p = loadError("patch.toml", "kind = \"plane\"\nfriction = 0.9\n[[friction_patches]]\nx_min = 5.0\nx_max = 1.0\nfriction = 0.2\n");
+  EXPECT_TRUE(contains(p, "patch.toml:5:")) << p;
+  EXPECT_TRUE(contains(p, "key 'friction_patches[0].x_max': expected a number greater than x_min")) << p;
+  const std::string c = loadError("corrugation.toml", "kind = \"road\"\nfriction = 0.9\n[surface]\nx_min = 0.0\nx_max = 10.0\ny_min = -1.0\ny_max = 1.0\n[[corrugations]]\nx_min = 1.0\nx_max = 9.0\nwavelength = 0.0\nheight = 0.02\n");
+  EXPECT_TRUE(contains(c, "corrugation.toml:11:")) << c;
+  EXPECT_TRUE(contains(c, "wavelength")) << c;
+}
+
+TEST(TerrainFile, FrictionPatchesApplyToEveryKindAndTheLastOneWins) {
+  for (const char* kind : {"plane", "road"}) {
+    const std::string body = std::string("kind = \"") + kind + "\"\nfriction = 0.8\n" +
+                             (std::string(kind) == "road" ? "[surface]\nx_min = -10.0\nx_max = 10.0\ny_min = -10.0\ny_max = 10.0\n"
+                                                          : "") +
+                             "[[friction_patches]]\nx_min = 0.0\nfriction = 0.5\n"
+                             "[[friction_patches]]\nx_min = 2.0\nx_max = 3.0\ny_max = 0.0\nfriction = 0.3\n";
+    const std::string file = writeFile(std::string("patches_") + kind + ".toml", body);
+    const auto t = makeTerrain(loadTerrain(file));
+    auto mu = [&](double x, double y) { return t->castRay({x, y, 1}, {0, 0, -1}, 5).friction; };
+    EXPECT_DOUBLE_EQ(mu(-1.0, 0.0), 0.8) << kind;
+    EXPECT_DOUBLE_EQ(mu(1.0, 0.0), 0.5) << kind;
+    EXPECT_DOUBLE_EQ(mu(2.5, -1.0), 0.3) << kind;  // inside both: the last listed
+    EXPECT_DOUBLE_EQ(mu(2.5, 1.0), 0.5) << kind;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Determinism, concurrent reads, no allocation per ray.
 

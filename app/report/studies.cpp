@@ -54,6 +54,14 @@ Difference compareAt(const std::vector<double>& refT, const std::vector<double>&
   return d;
 }
 
+std::vector<std::string> hardCaseFiles() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(asset("scenarios/hard")))
+    if (e.path().extension() == ".toml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
   RunSummary s;
   std::vector<double> perStep;

@@ -43,6 +43,9 @@ scenario::ScenarioSpec scenarioWith(const std::string& scenarioFile, const std::
 // printf-formatted number for the tables.
 std::string fmt(const char* format, double value);
 
+// The hard cases: every .toml of assets/scenarios/hard/, sorted by name.
+std::vector<std::string> hardCaseFiles();
+
 // A converged run of the project's own model: 1 ms, Newton to tolerance, Jacobian every step.
 scenario::RunResult converged(const scenario::ScenarioSpec& s);
 

@@ -220,10 +220,7 @@ void survivalSection(std::ostream& md) {
      << "converged at 1 ms (Newton to tolerance, Jacobian every step): RMS of yaw rate (rad/s) / lateral "
      << "acceleration (m/s^2), absolute (a straight run has no peak to divide by).\n\n"
      << "| case | BDF2 10 ms | BDF2 20 ms | BDF2 40 ms | RK4 10 ms | Euler 10 ms |\n|---|---|---|---|---|---|\n";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(asset("scenarios/hard")))
-    if (e.path().extension() == ".toml") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = hardCaseFiles();
   struct Column {
     IntegratorMethod method;
     double step;
@@ -235,7 +232,7 @@ void survivalSection(std::ostream& md) {
                                     {IntegratorMethod::SemiImplicitEuler, 0.01}};
   std::vector<int> survived(cols.size(), 0);
   for (const auto& f : files) {
-    const scenario::ScenarioSpec base = scenario::loadScenarioFile(f.string());
+    const scenario::ScenarioSpec base = scenario::loadScenarioFile(f);
     const scenario::RunResult fine = converged(base);
     md << "| " << base.name;
     for (size_t k = 0; k < cols.size(); ++k) {

@@ -76,6 +76,19 @@ RoughPatch readRough(Table& t) {
   return p;
 }
 
+Corrugation readCorrugation(Table& t) {
+  t.rejectUnknownKeys({"x_min", "x_max", "wavelength", "height", "fade", "y_min", "y_max"});
+  Corrugation c;
+  c.xMin = t.numberIn("x_min", kCoordinate);
+  c.xMax = t.numberIn("x_max", kCoordinate);
+  t.require(c.xMax > c.xMin, "x_max", "a number greater than x_min");
+  c.wavelength = t.numberIn("wavelength", {0.05, 100.0});
+  c.height = t.numberIn("height", {0.0, 0.5, true, false});
+  c.fade = t.numberIn("fade", {0.0, 1e4, true, false}, 2.0);
+  readLateralExtent(t, c.yMin, c.yMax);
+  return c;
+}
+
 }  // namespace
 
 // The road's extent and features; the build choice stays with the caller.
@@ -85,6 +98,7 @@ RoadSurface readRoadSurface(Table& top) {
   for (Table& t : top.optionalTables("bumps")) road.bumps.push_back(readBump(t));
   for (Table& t : top.optionalTables("ramps")) road.ramps.push_back(readRamp(t));
   for (Table& t : top.optionalTables("rough")) road.rough.push_back(readRough(t));
+  for (Table& t : top.optionalTables("corrugations")) road.corrugations.push_back(readCorrugation(t));
   return road;
 }
 

@@ -52,9 +52,9 @@ double rampHeight(const Ramp& r, double x, double y, int sideX, int sideY) {
   return 0.0;
 }
 
-// Smooth 0 -> 1 taper over `fade` metres inside both ends of the patch.
-double roughTaper(const RoughPatch& p, double x) {
-  const double s = std::min(x - p.xMin, p.xMax - x) / p.fade;
+// Smooth 0 -> 1 taper over `fade` metres inside both ends of [xMin, xMax].
+double taper(double xMin, double xMax, double fade, double x) {
+  const double s = std::min(x - xMin, xMax - x) / fade;
   if (s <= 0.0) return 0.0;
   if (s >= 1.0) return 1.0;
   return s * s * (3.0 - 2.0 * s);
@@ -62,11 +62,19 @@ double roughTaper(const RoughPatch& p, double x) {
 
 // Height added by one rough patch at (x, y).
 double roughHeight(const RoughPatch& p, double x, double y) {
-  const double taper = roughTaper(p, x);
-  if (taper == 0.0) return 0.0;
+  const double fade = taper(p.xMin, p.xMax, p.fade, x);
+  if (fade == 0.0) return 0.0;
   double h = 0.0;
   for (const RoughWave& w : p.waves) h += w.amplitude * std::cos(w.kx * x + w.ky * y + w.phase);
-  return taper * h;
+  return fade * h;
+}
+
+// Height added by one corrugation at (x, y).
+double corrugationHeight(const Corrugation& c, double x, double y, int sideY) {
+  if (!within(y, sideY, c.yMin, c.yMax)) return 0.0;
+  const double fade = taper(c.xMin, c.xMax, c.fade, x);
+  if (fade == 0.0) return 0.0;
+  return fade * 0.5 * c.height * (1.0 - std::cos(2.0 * std::numbers::pi * (x - c.xMin) / c.wavelength));
 }
 
 // A grid line of the mesh; across a step line the height jumps.
@@ -136,6 +144,7 @@ double roadHeight(const RoadSurface& road, double x, double y, int sideX, int si
   for (const Bump& b : road.bumps) h += bumpHeight(b, x, y, sideX, sideY);
   for (const Ramp& r : road.ramps) h += rampHeight(r, x, y, sideX, sideY);
   for (const RoughPatch& p : road.rough) h += roughHeight(p, x, y);
+  for (const Corrugation& c : road.corrugations) h += corrugationHeight(c, x, y, sideY);
   return h;
 }
 
@@ -160,6 +169,13 @@ void buildRoadMesh(const RoadSurface& road, TerrainData& data) {
     if (p.xMax <= road.xMin || p.xMin >= road.xMax) continue;  // off the surface
     addEvenLines(road, xs, std::max(p.xMin, road.xMin), std::min(p.xMax, road.xMax));
     addEvenLines(road, ys, road.yMin, road.yMax);
+  }
+  for (const Corrugation& c : road.corrugations) {
+    if (c.xMax <= road.xMin || c.xMin >= road.xMax) continue;
+    // At least 8 lines a wavelength: the ridges keep their shape whatever `cell`.
+    const double from = std::max(c.xMin, road.xMin), to = std::min(c.xMax, road.xMax);
+    addEvenLines(road, xs, from, to, static_cast<int>(std::min(1e7, std::ceil(8.0 * (to - from) / c.wavelength))));
+    addLateralEdges(ys, c.yMin, c.yMax);
   }
   const std::vector<Sample> sx = samples(xs, road.xMin, road.xMax), sy = samples(ys, road.yMin, road.yMax);
   checkGridSize(road, static_cast<double>(sx.size()) * static_cast<double>(sy.size()), "road mesh");

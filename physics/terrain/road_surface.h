@@ -1,6 +1,6 @@
 // A road described by a few parameters instead of a mesh file: a flat base
-// z = 0 over a rectangle, plus bumps / curbs, ramps and seeded rough patches
-// whose heights add. Built at load into a triangle mesh (exact: steps become
+// z = 0 over a rectangle, plus bumps / curbs / potholes, ramps, seeded rough
+// patches and washboard corrugations whose heights add. Built at load into a triangle mesh (exact: steps become
 // vertical faces, slopes keep their breakpoints) or a uniform heightfield
 // (steps become one-cell slopes). Deterministic: same parameters, same bits.
 #pragma once
@@ -58,12 +58,24 @@ struct RoughPatch {
   std::vector<RoughWave> waves{};   // filled by makeRoughWaves
 };
 
+// A washboard: ridges across the road at a fixed wavelength,
+// height/2 (1 - cos(2 pi (x - xMin) / wavelength)), faded in and out over
+// `fade` (so the surface joins the flat road without a step).
+struct Corrugation {
+  double xMin = 0.0, xMax = 100.0;  // m
+  double wavelength = 0.7;          // m
+  double height = 0.02;             // peak to trough, m
+  double fade = 2.0;                // m
+  double yMin = -kUnbounded, yMax = kUnbounded;
+};
+
 struct RoadSurface {
   double xMin = -50, xMax = 250, yMin = -10, yMax = 10;  // extent of the surface, m
   double cell = 0.25;  // heightfield spacing; also the sampling step of smooth features in a mesh, m
   std::vector<Bump> bumps{};
   std::vector<Ramp> ramps{};
   std::vector<RoughPatch> rough{};
+  std::vector<Corrugation> corrugations{};
 };
 
 // Fill patch.waves deterministically from patch.seed (std::mt19937_64, whose

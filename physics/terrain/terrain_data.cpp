@@ -40,6 +40,9 @@ void checkHeightfield(const TerrainData& data) {
 // Throws unless the data of the declared kind are complete and finite.
 void checkTerrainData(const TerrainData& data) {
   if (!(data.friction > 0) || !std::isfinite(data.friction)) reject(data, "friction must be positive");
+  for (const FrictionPatch& f : data.frictionPatches)
+    if (!(f.friction > 0) || !std::isfinite(f.friction) || !(f.xMax > f.xMin) || !(f.yMax > f.yMin))
+      reject(data, "a friction patch needs a positive friction and x_max > x_min, y_max > y_min");
   switch (data.kind) {
     case TerrainKind::Plane:
       if (!data.planePoint.allFinite() || !data.planeNormal.allFinite() || data.planeNormal.norm() == 0.0)

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,23 @@ struct RoadMarkings {
   double laneWidth = 3.5;            // m
 };
 
+// A rectangle of the ground plane (world x, y; unbounded sides allowed) whose
+// surface has a friction of its own: a wet or icy lane, grass, gravel.
+struct FrictionPatch {
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  double xMin = -kInf, xMax = kInf, yMin = -kInf, yMax = kInf;  // m
+  double friction = 0.8;
+  bool contains(double x, double y) const { return x >= xMin && x < xMax && y >= yMin && y < yMax; }
+};
+
 struct TerrainData {
   std::string name;
   std::string sourceFile;            // the .toml it came from
   TerrainKind kind = TerrainKind::Plane;
   double friction = 0.8;
+  // Where a ray hits inside a patch, the patch's friction (the last patch
+  // listed that contains the hit wins); elsewhere `friction`.
+  std::vector<FrictionPatch> frictionPatches;
   // Plane.
   Eigen::Vector3d planePoint = Eigen::Vector3d::Zero();
   Eigen::Vector3d planeNormal = Eigen::Vector3d::UnitZ();

@@ -80,11 +80,25 @@ RoadMarkings readMarkings(Table t) {
   return m;
 }
 
+// A rectangle of the ground plane with a friction of its own.
+FrictionPatch readFrictionPatch(Table& t) {
+  t.rejectUnknownKeys({"x_min", "x_max", "y_min", "y_max", "friction"});
+  FrictionPatch f;
+  f.xMin = t.numberIn("x_min", kCoordinate, -FrictionPatch::kInf);
+  f.xMax = t.numberIn("x_max", kCoordinate, FrictionPatch::kInf);
+  t.require(f.xMax > f.xMin, "x_max", "a number greater than x_min");
+  f.yMin = t.numberIn("y_min", kCoordinate, -FrictionPatch::kInf);
+  f.yMax = t.numberIn("y_max", kCoordinate, FrictionPatch::kInf);
+  t.require(f.yMax > f.yMin, "y_max", "a number greater than y_min");
+  f.friction = t.numberIn("friction", kFriction);
+  return f;
+}
+
 // Tables each kind may have besides name, kind, friction and markings.
 std::vector<std::string_view> knownTopLevelKeys(const std::string& kind) {
-  std::vector<std::string_view> keys = {"name", "kind", "friction", "markings"};
+  std::vector<std::string_view> keys = {"name", "kind", "friction", "friction_patches", "markings"};
   if (kind == "road")
-    keys.insert(keys.end(), {"build", "surface", "bumps", "ramps", "rough"});
+    keys.insert(keys.end(), {"build", "surface", "bumps", "ramps", "rough", "corrugations"});
   else
     keys.push_back(kind == "plane" ? "plane" : kind == "mesh" ? "mesh" : "heightfield");
   return keys;
@@ -121,6 +135,7 @@ TerrainData readTerrain(const std::string& tomlPath) {
   data.sourceFile = tomlPath;
   data.name = top.string("name", std::filesystem::path(tomlPath).stem().string());
   data.friction = top.numberIn("friction", kFriction);
+  for (Table& t : top.optionalTables("friction_patches")) data.frictionPatches.push_back(readFrictionPatch(t));
   if (top.has("markings")) data.road = readMarkings(top.table("markings"));
   readSurface(top, kind, tomlPath, data);
   return data;

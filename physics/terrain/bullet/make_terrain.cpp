@@ -4,15 +4,48 @@
 
 namespace bdfcar::terrain {
 
-// Checked data to the matching implementation.
-std::unique_ptr<Terrain> makeTerrain(const TerrainData& data) {
-  checkTerrainData(data);
+namespace {
+
+// The surface's own implementation with the friction patches laid over it:
+// a hit inside a patch reports the patch's friction.
+class PatchedFriction final : public Terrain {
+ public:
+  PatchedFriction(std::unique_ptr<Terrain> surface, std::vector<FrictionPatch> patches)
+      : surface_(std::move(surface)), patches_(std::move(patches)) {}
+  Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override {
+    Hit h = surface_->castRay(from, direction, maxDistance);
+    if (!h.hit) return h;
+    for (auto p = patches_.rbegin(); p != patches_.rend(); ++p) {
+      if (p->contains(h.point.x(), h.point.y())) {
+        h.friction = p->friction;
+        break;
+      }
+    }
+    return h;
+  }
+
+ private:
+  std::unique_ptr<Terrain> surface_;
+  std::vector<FrictionPatch> patches_;
+};
+
+std::unique_ptr<Terrain> makeSurface(const TerrainData& data) {
   switch (data.kind) {
     case TerrainKind::Plane: return std::make_unique<PlaneTerrain>(data.planePoint, data.planeNormal, data.friction);
     case TerrainKind::Mesh: return makeMeshTerrain(data);
     case TerrainKind::Heightfield: return makeHeightfieldTerrain(data);
   }
   return nullptr;
+}
+
+}  // namespace
+
+// Checked data to the matching implementation.
+std::unique_ptr<Terrain> makeTerrain(const TerrainData& data) {
+  checkTerrainData(data);
+  std::unique_ptr<Terrain> surface = makeSurface(data);
+  if (data.frictionPatches.empty()) return surface;
+  return std::make_unique<PatchedFriction>(std::move(surface), data.frictionPatches);
 }
 
 }  // namespace bdfcar::terrain
