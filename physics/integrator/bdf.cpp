@@ -183,10 +183,10 @@ void BdfIntegrator::factorize(double hp) {
 // of A (h' dF_v, m of them) and E the unit vectors of their indices,
 //   (A + U E^T)^-1 = A^-1 - Z (I + E^T Z)^-1 E^T A^-1,   Z = A^-1 U,
 // so a refresh costs 1 + m residuals and an n x n x m product, no LU of A.
-EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, Message& msg) {
+EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual* base, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   dae_.retract(node(0).q, d_, q_);
-  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, dx_, ws_, counters_.jacobianResiduals);
+  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, counters_.jacobianResiduals);
   if (st != EvalStatus::Ok) {
     msg = ws_.msg;
     return st;
@@ -240,7 +240,7 @@ double BdfIntegrator::correctionNorm() const {
 // Newton iterations from the current iterate: `iterations` of them, or up to
 // maxNewtonIterations until the correction is within tolerance.
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
-                                                   bool toTolerance, StepReport& rep) {
+                                                   bool toTolerance, StepReport& rep, bool refreshFast) {
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
   int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
@@ -253,6 +253,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       st = dae_.residual(t, q_, v_, a_, lam_, r_, true, rep.message);
       ++counters_.residuals;
     }
+    if (st == EvalStatus::Ok && refreshFast) st = refreshFastColumns(t, hp, &r_, rep.message);
     if (st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
       rep.recoverable = st == EvalStatus::Recoverable;
@@ -321,7 +322,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     // A fixed count that ends far above tolerance (an impact) but still
     // contracting goes on while it contracts: chord iterations (a residual
     // each) are the cheapest way there.
-    if (opt_.refreshWhenNotContracting && !toTolerance && it == maxIt && it > 1 && it < opt_.maxNewtonIterations && norm > opt_.largeCorrection &&
+    const bool chord = opt_.refreshWhenNotContracting && opt_.chordContinuation && !toTolerance;
+    if (chord && it == maxIt && it > 1 && it < opt_.maxNewtonIterations && norm > opt_.largeCorrection &&
         rep.contraction < opt_.contractionLimit)
       ++maxIt;
   }
@@ -346,24 +348,22 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
                                                        StepReport& rep) {
   double prev = rep.correction;
   for (int it = 0; it < opt_.maxNewtonIterations; ++it) {
-    EvalStatus st;
-    if (scope == JacobianScope::FastColumns) {
-      st = refreshFastColumns(t, c.hPrime, rep.message);
-    } else {
+    if (scope == JacobianScope::Whole) {
       dae_.retract(node(0).q, d_, q_);
-      st = evaluateJacobian(t, rep.message);
-      if (st == EvalStatus::Ok) factorize(c.hPrime);
-    }
-    if (st != EvalStatus::Ok) {
-      rep.status = StepStatus::EvaluationFailed;
-      rep.recoverable = st == EvalStatus::Recoverable;
-      return NewtonOutcome::Failed;
+      const EvalStatus st = evaluateJacobian(t, rep.message);
+      if (st != EvalStatus::Ok) {
+        rep.status = StepStatus::EvaluationFailed;
+        rep.recoverable = st == EvalStatus::Recoverable;
+        return NewtonOutcome::Failed;
+      }
+      factorize(c.hPrime);
     }
     d0_ = d_;
     v0_ = v_;
     a0_ = a_;
     lam0_ = lam_;
-    const NewtonOutcome one = newton(t, c, 1, false, rep);
+    // The fast columns are refreshed inside the iteration, from its residual.
+    const NewtonOutcome one = newton(t, c, 1, false, rep, scope == JacobianScope::FastColumns);
     if (one == NewtonOutcome::Failed) return one;
     // Damping: a correction larger than the last one is halved (up to 4 times).
     for (int halving = 0; halving < 4 && rep.correction > prev && prev > 1.0; ++halving) {
@@ -412,11 +412,12 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
     return NewtonOutcome::Failed;
   };
   NewtonOutcome out = NewtonOutcome::NotContracting;
-  if (!dae_.fastColumns().empty()) {
+  if (opt_.fastColumnRescue && !dae_.fastColumns().empty()) {
     // (a)
     if (!(rep.correction < firstCorrection_)) startFromPredictor();
     ++counters_.refreshes;
-    if (const EvalStatus st = refreshFastColumns(t, c.hPrime, rep.message); st != EvalStatus::Ok) return failed(st);
+    if (const EvalStatus st = refreshFastColumns(t, c.hPrime, nullptr, rep.message); st != EvalStatus::Ok)
+      return failed(st);
     out = attempt();
     if (out != NewtonOutcome::NotContracting) return out;
     // (b)

@@ -48,6 +48,12 @@ struct BdfOptions {
   // A fixed-count step whose last correction is above this many tolerances
   // has not converged whatever its contraction (an impact): treated as stalled.
   double largeCorrection = 100.0;
+  // Parts of that policy, each on by default (off only to measure what it
+  // buys, RESULTS 4b): chord iterations past the fixed count while an
+  // impact's large correction still contracts; the rescue by the DAE's fast
+  // columns (Dae::fastColumns) before the whole Jacobian.
+  bool chordContinuation = true;
+  bool fastColumnRescue = true;
   StartUp startUp = StartUp::Auto;
   bool timing = true;             // accumulate the Jacobian / residual / back-substitution split
 };
@@ -83,11 +89,14 @@ class BdfIntegrator final : public Integrator {
   StepReport splitOnFailure(double h, bool jacobianDue, int depth);
   EvalStatus evaluateJacobian(double t, Message& msg);
   void factorize(double hPrime);
-  EvalStatus refreshFastColumns(double t, double hPrime, Message& msg);
+  // base: the residual at the iterate when the caller has it (saves one).
+  EvalStatus refreshFastColumns(double t, double hPrime, const Residual* base, Message& msg);
   void applyLowRankUpdate(Vec& x);
   void startFromPredictor();
   enum class NewtonOutcome { Converged, NotContracting, Failed };
-  NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep);
+  // refreshFast: re-evaluate the fast columns at the iterate (from its residual) before solving.
+  NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep,
+                       bool refreshFast = false);
   enum class JacobianScope { FastColumns, Whole };
   NewtonOutcome fullNewton(double t, const BdfCoefficients& c, JacobianScope scope, StepReport& rep);
   NewtonOutcome recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort, StepReport& rep);

@@ -68,7 +68,9 @@ class Dae {
   // divergence (non-Ok stops the run with msg). Called right after the last
   // residual evaluation of the step, whose intermediate results (kinematics,
   // constraint values) differ from the accepted state only by the last Newton
-  // correction: an implementation may use them where that is immaterial.
+  // correction (or, after a fast-column refresh, by a finite-difference
+  // increment of one fast velocity, ~1e-8 relative): an implementation may
+  // use them where that is immaterial.
   virtual EvalStatus acceptStep(double /*t*/, double /*h*/, const Vec& /*q*/, const Vec& /*v*/, Message& /*msg*/) {
     return EvalStatus::Ok;
   }

@@ -110,10 +110,15 @@ EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v,
 }
 
 EvalStatus fastVelocityColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                               StateDerivatives& out, BlockWorkspace& ws, long& count) {
-  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
-  ++count;
-  if (st != EvalStatus::Ok) return st;
+                               const Residual* base, StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  EvalStatus st = EvalStatus::Ok;
+  if (base) {
+    ws.r0 = *base;
+  } else {
+    st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
+    ++count;
+    if (st != EvalStatus::Ok) return st;
+  }
   ws.v = v;
   for (const int i : dae.fastColumns()) {
     st = velocityColumn(dae, t, q, v, a, lambda, i, out, ws, count);
