@@ -89,6 +89,13 @@ int runInputMonitor(const MonitorOptions& o) {
     InputSystem input(io);
     printDevices(o.out, input.devices(), o);
     if (o.listOnly) return 0;
+    if (input.devices().empty()) {
+      // Live values of nothing would be the keyboard's zeros for ever.
+      std::fprintf(o.out,
+                   "no wheel, joystick or game controller is connected: no live values to show (plug one in, or "
+                   "check that this user may read /dev/input; the keyboard drives through `bdfcar drive`)\n");
+      return 0;
+    }
     const long ticks = o.seconds > 0.0 ? std::lround(o.seconds / kTick) : -1;  // -1: until Ctrl-C
     const long printEvery = std::max(1L, std::lround(o.printInterval / kTick));
     Controls seen;
