@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "scenario/run.h"
@@ -277,4 +278,28 @@ TEST(RunState, TelemetryBurstKeepsEveryRowInOrder) {
   }
   EXPECT_EQ(n, rows);
   w.close();
+}
+
+// docs/TELEMETRY.md documents every column of the header (quantity, unit,
+// sign and frame): a column added to the writer but not to the document
+// fails here.
+TEST(Telemetry, EveryColumnIsDocumented) {
+  const std::string doc = readFile(std::string(BDFCAR_SOURCE_DIR) + "/docs/TELEMETRY.md");
+  ASSERT_FALSE(doc.empty()) << "docs/TELEMETRY.md";
+  // The first cell of each table row, split at commas: the documented names.
+  std::set<std::string> documented;
+  std::istringstream lines(doc);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| ", 0) != 0) continue;
+    std::istringstream cell(line.substr(2, line.find(" |", 2) - 2));
+    for (std::string name; std::getline(cell, name, ',');) {
+      name.erase(0, name.find_first_not_of(' '));
+      documented.insert(name);
+    }
+  }
+  std::istringstream header(scenario::TelemetryWriter::header());
+  int columns = 0;
+  for (std::string column; std::getline(header, column, ','); ++columns)
+    EXPECT_TRUE(documented.count(column)) << "column '" << column << "' is not in docs/TELEMETRY.md";
+  EXPECT_GE(columns, 50);
 }

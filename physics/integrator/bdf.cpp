@@ -339,12 +339,12 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
   return stalled ? NewtonOutcome::NotContracting : NewtonOutcome::Converged;
 }
 
-// Newton on to tolerance (with a fixed count, on to that count's acceptance)
-// with the iteration matrix re-evaluated at every iterate (a tyre may have
-// moved between its linear and sliding regimes, where a Jacobian from the
-// other regime makes the chord iteration cycle): the fast columns alone, or
-// the whole Jacobian. A correction that does not reduce the correction norm
-// is halved.
+// Newton on to tolerance (the fast-column rescue with a fixed count: on to
+// that count's acceptance) with the iteration matrix re-evaluated at every
+// iterate (a tyre may have moved between its linear and sliding regimes,
+// where a Jacobian from the other regime makes the chord iteration cycle):
+// the fast columns alone, or the whole Jacobian. A correction that does not
+// reduce the correction norm is halved.
 BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoefficients& c, JacobianScope scope,
                                                        StepReport& rep) {
   double prev = rep.correction;
@@ -375,12 +375,13 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
       rep.correction *= 0.5;
     }
     if (rep.correction <= 1.0) return NewtonOutcome::Converged;
-    // With a fixed count, the rescue ends on the fixed count's own terms: a
-    // correction within largeCorrection that contracted (as an ordinary step
-    // with 2 iterations is accepted); it need not do better than the steps
-    // that never stalled.
-    if (opt_.newtonIterations > 0 && it > 0 && rep.correction <= opt_.largeCorrection &&
-        rep.correction < opt_.contractionLimit * prev)
+    // With a fixed count, the fast-column rescue ends on the fixed count's own
+    // terms: a correction within largeCorrection that contracted (as an
+    // ordinary step with 2 iterations is accepted); it need not do better
+    // than the steps that never stalled. The whole-Jacobian rescue (the last
+    // resort, and DAEs without fast columns) still goes to tolerance.
+    if (scope == JacobianScope::FastColumns && opt_.newtonIterations > 0 && it > 0 &&
+        rep.correction <= opt_.largeCorrection && rep.correction < opt_.contractionLimit * prev)
       return NewtonOutcome::Converged;
     prev = rep.correction;
   }
