@@ -182,8 +182,9 @@ void BdfIntegrator::factorize(double hp) {
 // follows by a rank-m update (Woodbury): with U the change of those columns
 // of A (h' dF_v, m of them) and E the unit vectors of their indices,
 //   (A + U E^T)^-1 = A^-1 - Z (I + E^T Z)^-1 E^T A^-1,   Z = A^-1 U,
-// so a refresh costs 1 + m residuals and an n x n x m product, no LU of A.
-EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual* base, Message& msg) {
+// so a refresh costs m residuals (differenced against the iteration's own)
+// and an n x n x m product, no LU of A.
+EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual& base, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   dae_.retract(node(0).q, d_, q_);
   const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, counters_.jacobianResiduals);
@@ -241,6 +242,7 @@ double BdfIntegrator::correctionNorm() const {
 // maxNewtonIterations until the correction is within tolerance.
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
                                                    bool toTolerance, StepReport& rep, bool refreshFast) {
+  bool refreshNow = refreshFast;
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
   int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
@@ -253,7 +255,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       st = dae_.residual(t, q_, v_, a_, lam_, r_, true, rep.message);
       ++counters_.residuals;
     }
-    if (st == EvalStatus::Ok && refreshFast) st = refreshFastColumns(t, hp, &r_, rep.message);
+    if (st == EvalStatus::Ok && refreshNow) st = refreshFastColumns(t, hp, r_, rep.message);
+    refreshNow = false;
     if (st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
       rep.recoverable = st == EvalStatus::Recoverable;
@@ -409,11 +412,11 @@ void BdfIntegrator::startFromPredictor() {
 // then Newton on to tolerance with the whole Jacobian at every iterate.
 BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort,
                                                     StepReport& rep) {
-  auto attempt = [&] {
+  auto attempt = [&](bool refreshFast) {
     rep.status = StepStatus::Ok;
     rep.recoverable = false;
     rep.iterations = 0;
-    return newton(t, c, opt_.newtonIterations, opt_.newtonIterations <= 0, rep);
+    return newton(t, c, opt_.newtonIterations, opt_.newtonIterations <= 0, rep, refreshFast);
   };
   auto failed = [&](EvalStatus st) {
     rep.status = StepStatus::EvaluationFailed;
@@ -422,12 +425,10 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
   };
   NewtonOutcome out = NewtonOutcome::NotContracting;
   if (opt_.fastColumnRescue && !dae_.fastColumns().empty()) {
-    // (a)
+    // (a) the refresh from the attempt's first residual
     if (!(rep.correction < firstCorrection_)) startFromPredictor();
     ++counters_.refreshes;
-    if (const EvalStatus st = refreshFastColumns(t, c.hPrime, nullptr, rep.message); st != EvalStatus::Ok)
-      return failed(st);
-    out = attempt();
+    out = attempt(true);
     if (out != NewtonOutcome::NotContracting) return out;
     // (b)
     ++counters_.rescues;
@@ -447,7 +448,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
     dae_.retract(node(0).q, d_, q_);
     if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) return failed(st);
     factorize(c.hPrime);
-    out = attempt();
+    out = attempt(false);
     if (out != NewtonOutcome::NotContracting) return out;
   }
   ++counters_.rescues;

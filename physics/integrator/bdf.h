@@ -89,12 +89,12 @@ class BdfIntegrator final : public Integrator {
   StepReport splitOnFailure(double h, bool jacobianDue, int depth);
   EvalStatus evaluateJacobian(double t, Message& msg);
   void factorize(double hPrime);
-  // base: the residual at the iterate when the caller has it (saves one).
-  EvalStatus refreshFastColumns(double t, double hPrime, const Residual* base, Message& msg);
+  // base: the residual at the iterate (the Newton iteration's own).
+  EvalStatus refreshFastColumns(double t, double hPrime, const Residual& base, Message& msg);
   void applyLowRankUpdate(Vec& x);
   void startFromPredictor();
   enum class NewtonOutcome { Converged, NotContracting, Failed };
-  // refreshFast: re-evaluate the fast columns at the iterate (from its residual) before solving.
+  // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.
   NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep,
                        bool refreshFast = false);
   enum class JacobianScope { FastColumns, Whole };

@@ -84,7 +84,7 @@ class Dae {
   // than the rest of the Jacobian (a wheel spin under its tyre's slip
   // stiffness, which falls tenfold when the tyre saturates; the tyre depends
   // on the spin rate, not the spin angle). When Newton stalls, the BDF
-  // integrator re-evaluates these columns alone (1 + 1 per column residuals)
+  // integrator re-evaluates these columns alone (a residual per column)
   // before it pays for the whole Jacobian. Empty: no such columns.
   virtual const std::vector<int>& fastColumns() const {
     static const std::vector<int> none;

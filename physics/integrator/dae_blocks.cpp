@@ -110,18 +110,11 @@ EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v,
 }
 
 EvalStatus fastVelocityColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                               const Residual* base, StateDerivatives& out, BlockWorkspace& ws, long& count) {
-  EvalStatus st = EvalStatus::Ok;
-  if (base) {
-    ws.r0 = *base;
-  } else {
-    st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
-    ++count;
-    if (st != EvalStatus::Ok) return st;
-  }
+                               const Residual& base, StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  ws.r0 = base;
   ws.v = v;
   for (const int i : dae.fastColumns()) {
-    st = velocityColumn(dae, t, q, v, a, lambda, i, out, ws, count);
+    const EvalStatus st = velocityColumn(dae, t, q, v, a, lambda, i, out, ws, count);
     if (st != EvalStatus::Ok) return st;
   }
   return EvalStatus::Ok;

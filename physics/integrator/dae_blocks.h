@@ -31,9 +31,9 @@ struct StateDerivatives {
 EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                                  StateDerivatives& out, BlockWorkspace& ws, long& residualCount);
 // The F_v (and g_v) columns of the DAE's fast coordinates alone
-// (Dae::fastColumns(): 1 + 1 per column residuals, or 1 per column given the
-// residual at the point as `base`), the rest of `out` kept.
+// (Dae::fastColumns(): one residual per column, differenced against `base`,
+// the residual at the point), the rest of `out` kept.
 EvalStatus fastVelocityColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                               const Residual* base, StateDerivatives& out, BlockWorkspace& ws, long& residualCount);
+                               const Residual& base, StateDerivatives& out, BlockWorkspace& ws, long& residualCount);
 
 }  // namespace bdfcar::integ
