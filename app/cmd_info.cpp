@@ -12,6 +12,7 @@
 #include "terrain/terrain_file.h"
 #include "scenario/scenario_spec.h"
 #include "vehicle/kinematic_model.h"
+#include "vehicle/planar_model.h"
 #include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_file.h"
@@ -50,17 +51,27 @@ bool isTerrainFile(const std::string& path) {
   return (root.has("kind") || root.has("friction")) && !root.has("vehicle");
 }
 
-// The kinematic model derived from the linkage: its bodies, tables and the
-// check of the tables against the linkage.
-void printKinematic(const vehicle::Vehicle& linkage) {
-  const vehicle::KinematicDerivation k = vehicle::deriveKinematic(linkage);
-  const mb::Model& m = k.vehicle.model;
-  std::printf("\nderived: the kinematic model (--fidelity kinematic)\n");
+// A model derived from the linkage (kinematic or planar): its bodies, and
+// its figures with the check of the tables against the linkage.
+void printDerived(const vehicle::Vehicle& linkage, vehicle::Fidelity f) {
+  std::string figures;
+  vehicle::Vehicle derived;
+  if (f == vehicle::Fidelity::Planar) {
+    const vehicle::PlanarDerivation p = vehicle::derivePlanar(linkage);
+    figures = vehicle::describePlanar(p) + vehicle::describeKinematic(p.kinematic);
+    derived = p.vehicle;
+  } else {
+    const vehicle::KinematicDerivation k = vehicle::deriveKinematic(linkage);
+    figures = vehicle::describeKinematic(k);
+    derived = k.vehicle;
+  }
+  const mb::Model& m = derived.model;
+  std::printf("\nderived: the %s model (--fidelity %s)\n", vehicle::fidelityName(f), vehicle::fidelityName(f));
   std::printf("  %-18s %9s  %-26s %s\n", "body", "mass kg", "joint", "parent");
   for (const mb::Body& b : m.bodies)
     std::printf("  %-18s %9.3f  %-26s %s\n", b.name.c_str(), b.mass, mb::jointTypeName(b.joint),
                 b.parent < 0 ? "(ground)" : m.bodies[b.parent].name.c_str());
-  std::printf("%s", vehicle::describeKinematic(k).c_str());
+  std::printf("%s", figures.c_str());
 }
 
 int runInfo(const std::string& path, const std::string& fidelity) {
@@ -106,7 +117,7 @@ int runInfo(const std::string& path, const std::string& fidelity) {
   std::printf("total mass: %.3f kg\n", m.totalMass());
   vehicle::Fidelity f = vehicle::Fidelity::Linkage;
   if (!fidelity.empty()) scenario::parseFidelity(fidelity, f);
-  if (f == vehicle::Fidelity::Kinematic) printKinematic(v);
+  if (f != vehicle::Fidelity::Linkage) printDerived(v, f);
   return 0;
 }
 
@@ -122,7 +133,7 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
   auto fidelity = std::make_shared<std::string>();
   cmd->add_option("--fidelity", *fidelity,
                   "Also derive this model from the vehicle and print it with its check against the linkage")
-      ->check(CLI::IsMember({"linkage", "kinematic"}));
+      ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
   commands.push_back({cmd, [path, fidelity] { return reportErrors([&] { return runInfo(*path, *fidelity); }); }});
 }
 

@@ -16,8 +16,8 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--jacobian-every", ov.jacobianEvery, "Jacobian every N steps (0 = first step only)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--fidelity", ov.fidelity,
-                 "Suspension model: linkage (the vehicle file's) or kinematic (derived from it at load time)")
-      ->check(CLI::IsMember({"linkage", "kinematic"}));
+                 "Suspension model: linkage (the vehicle file's), kinematic or planar (derived from it at load time)")
+      ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
   cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
   cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
   cmd.add_flag("--as-published", ov.asPublished,

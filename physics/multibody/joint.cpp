@@ -67,6 +67,10 @@ void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj) {
       dj = Vec3(q[0], q[1], q[2]);
       Rj = quatToMatrix(q + 3);
       break;
+    case JointType::Planar:
+      dj = Vec3(q[0], q[1], 0.0);
+      Rj = rotZ(q[2]);
+      break;
   }
 }
 
@@ -107,6 +111,13 @@ void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
       Sj.resize(6, 6);
       Sj.setIdentity();
       break;
+    case JointType::Planar:  // v = (forward, sideways) in the child joint frame, rate about z
+      Sj.resize(6, 3);
+      Sj.setZero();
+      Sj(0, 0) = 1;
+      Sj(1, 1) = 1;
+      Sj(5, 2) = 1;
+      break;
   }
 }
 
@@ -146,6 +157,14 @@ void jointRetract(JointType type, const double* q, const double* dq, double* out
       storeQuat(loadQuat(q + 3) * expQuat(Vec3(dq[3], dq[4], dq[5])), out + 3);
       break;
     }
+    case JointType::Planar: {
+      // As the free joint: the translation increment is in the child frame.
+      const double c = std::cos(q[2]), s = std::sin(q[2]);
+      out[0] = q[0] + c * dq[0] - s * dq[1];
+      out[1] = q[1] + s * dq[0] + c * dq[1];
+      out[2] = q[2] + dq[2];
+      break;
+    }
   }
 }
 
@@ -176,6 +195,14 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
         out[i] = dp(i);
         out[3 + i] = th(i);
       }
+      break;
+    }
+    case JointType::Planar: {
+      const double c = std::cos(base[2]), s = std::sin(base[2]);
+      const double dx = q[0] - base[0], dy = q[1] - base[1];
+      out[0] = c * dx + s * dy;
+      out[1] = -s * dx + c * dy;
+      out[2] = q[2] - base[2];
       break;
     }
   }
@@ -210,6 +237,14 @@ void jointLocalRate(JointType type, const double* delta, const double* v, double
         out[i] = lin(i);
         out[3 + i] = ang(i);
       }
+      break;
+    }
+    case JointType::Planar: {
+      // d/dt Rz(a0)^T (p - p0) = Rz(a - a0) v_lin.
+      const double c = std::cos(delta[2]), s = std::sin(delta[2]);
+      out[0] = c * v[0] - s * v[1];
+      out[1] = s * v[0] + c * v[1];
+      out[2] = v[2];
       break;
     }
   }

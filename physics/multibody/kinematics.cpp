@@ -118,6 +118,10 @@ void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
         R = throughJointFrames(b, quatToMatrix(qi + 3));
         t += b.inParent.axes * Vec3(qi[0], qi[1], qi[2]);
         break;
+      case JointType::Planar:
+        R = rotateAboutAxis(b, qi[2]);
+        t += b.inParent.axes * Vec3(qi[0], qi[1], 0.0);
+        break;
       case JointType::Tabulated1:
       case JointType::Tabulated2: tabulatedPose(model, b, qi, d, R, t); break;
     }

@@ -19,6 +19,7 @@ int jointNq(JointType t) {
     case JointType::Tabulated2: return 2;
     case JointType::Spherical: return 4;
     case JointType::Free: return 7;
+    case JointType::Planar: return 3;
   }
   return 0;
 }
@@ -31,7 +32,8 @@ int jointNv(JointType t) {
     case JointType::Cylindrical:
     case JointType::Universal:
     case JointType::Tabulated2: return 2;
-    case JointType::Spherical: return 3;
+    case JointType::Spherical:
+    case JointType::Planar: return 3;
     case JointType::Free: return 6;
   }
   return 0;
@@ -45,6 +47,7 @@ const char* jointTypeName(JointType t) {
     case JointType::Universal: return "universal";
     case JointType::Spherical: return "spherical";
     case JointType::Free: return "free";
+    case JointType::Planar: return "planar";
     case JointType::Tabulated1: return "tabulated (1 coordinate)";
     case JointType::Tabulated2: return "tabulated (2 coordinates)";
   }

@@ -22,8 +22,11 @@ constexpr int kGround = -1;
 // joint frame (position + rotation). Tabulated1 / Tabulated2: the body frame
 // relative to the parent body frame is a tabulated function of one or two
 // coordinates (a JointTable; e.g. a wheel carrier moving with suspension
-// travel and rack travel as the linkage it stands for moves it).
-enum class JointType { Revolute, Prismatic, Cylindrical, Universal, Spherical, Free, Tabulated1, Tabulated2 };
+// travel and rack travel as the linkage it stands for moves it). Planar:
+// translation in the x-y plane of the parent joint frame and rotation about
+// its z (a vehicle on level ground without heave, roll or pitch); q = (x, y,
+// angle), v = (forward, sideways, angular rate) in the child joint frame.
+enum class JointType { Revolute, Prismatic, Cylindrical, Universal, Spherical, Free, Tabulated1, Tabulated2, Planar };
 
 // Number of position coordinates (rotations stored as unit quaternions).
 int jointNq(JointType t);

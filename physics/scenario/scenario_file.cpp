@@ -121,6 +121,7 @@ CheckSpec readCheck(Table& t) {
 bool parseFidelity(const std::string& name, vehicle::Fidelity& out) {
   if (name == "linkage") out = vehicle::Fidelity::Linkage;
   else if (name == "kinematic") out = vehicle::Fidelity::Kinematic;
+  else if (name == "planar") out = vehicle::Fidelity::Planar;
   else return false;
   return true;
 }
@@ -160,7 +161,7 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   if (auto f = root.optionalTable("fidelity")) {
     const std::string susp = f->string("suspension", "linkage");
     if (!parseFidelity(susp, s.fidelity.suspension))
-      f->fail("unknown suspension model '" + susp + "': expected linkage or kinematic", "suspension");
+      f->fail("unknown suspension model '" + susp + "': expected linkage, kinematic or planar", "suspension");
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <Eigen/QR>
 #include <stdexcept>
 
@@ -70,18 +71,31 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile));
-  if (spec.fidelity.suspension == vehicle::Fidelity::Kinematic) {
-    vehicle::KinematicDerivation k = [&] {
-      try {
-        return vehicle::deriveKinematic(w->vehicle);
-      } catch (const mb::ModelError& e) {
-        throw mb::ModelError(spec.vehicleFile + ": " + e.what() + " (the scenario asks for [fidelity] suspension = kinematic)");
-      }
-    }();
+  const vehicle::Fidelity rung = spec.fidelity.suspension;
+  // A derived model names the vehicle file and the rung the scenario asked for.
+  auto derive = [&](auto derivation) {
+    try {
+      return derivation(w->vehicle);
+    } catch (const mb::ModelError& e) {
+      throw mb::ModelError(spec.vehicleFile + ": " + e.what() + " (the scenario asks for [fidelity] suspension = " +
+                           vehicle::fidelityName(rung) + ")");
+    }
+  };
+  if (rung == vehicle::Fidelity::Kinematic) {
+    vehicle::KinematicDerivation k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
     w->vehicle = std::move(k.vehicle);
     w->kinematicCheck = k.check;
+  } else if (rung == vehicle::Fidelity::Planar) {
+    vehicle::PlanarDerivation p = derive([](const vehicle::Vehicle& v) { return vehicle::derivePlanar(v); });
+    w->vehicle = std::move(p.vehicle);
+    w->kinematicCheck = p.kinematic.check;
   }
   w->terrain = loadGround(spec);
+  if (rung == vehicle::Fidelity::Planar) {
+    // The planar model's road is the level plane through the ground at the start.
+    const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
+    vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
+  }
   if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY);
   return w;
 }
@@ -191,12 +205,25 @@ vehicle::EquilibriumReport Simulation::prepare() {
   integ::Vec q = vehicle::designPositions(vehicle());
   const StartPose pose = startPose();
   const double groundZ = pose.groundZ;
-  q.segment<3>(ch.qIndex) = pose.origin;
-  const Eigen::Quaterniond yaw(pose.rotation);
-  q(ch.qIndex + 3) = yaw.w();
-  q(ch.qIndex + 4) = yaw.x();
-  q(ch.qIndex + 5) = yaw.y();
-  q(ch.qIndex + 6) = yaw.z();
+  const mb::Body& base = m.bodies[vehicle().layout.base];
+  if (base.joint == mb::JointType::Planar) {
+    // Level ground only: the planar model has no heave, roll or pitch of its base.
+    const double slope = std::acos(std::clamp(pose.rotation(2, 2), -1.0, 1.0));
+    if (slope > 1e-3)
+      throw PrepareError(spec().sourceFile + ": the ground under the start slopes by " +
+                         std::to_string(slope * 180 / M_PI) +
+                         " deg; [fidelity] suspension = planar needs level ground (use kinematic or linkage)");
+    q(base.qIndex) = spec().startX;
+    q(base.qIndex + 1) = spec().startY;
+    q(base.qIndex + 2) = spec().startHeading;
+  } else {
+    q.segment<3>(ch.qIndex) = pose.origin;
+    const Eigen::Quaterniond yaw(pose.rotation);
+    q(ch.qIndex + 3) = yaw.w();
+    q(ch.qIndex + 4) = yaw.x();
+    q(ch.qIndex + 5) = yaw.y();
+    q(ch.qIndex + 6) = yaw.z();
+  }
   std::string msg;
   if (!vehicle::assemble(vehicle(), *dae_, t0, q, msg))
     throw PrepareError(spec().vehicleFile + ": the vehicle cannot be assembled at the start: " + msg);
@@ -211,8 +238,12 @@ vehicle::EquilibriumReport Simulation::prepare() {
   integ::Vec v = integ::Vec::Zero(m.nv);
   mb::Data& d = dae_->data();
   mb::updatePositions(m, q, d);
-  const Eigen::Vector3d worldVel = spec().initialSpeed * (d.R[vehicle().layout.chassis] * Eigen::Vector3d::UnitX());
-  v.segment<3>(ch.vIndex) = d.R[vehicle().layout.chassis].transpose() * worldVel;
+  if (base.joint == mb::JointType::Planar) {
+    v(base.vIndex) = spec().initialSpeed;
+  } else {
+    const Eigen::Vector3d worldVel = spec().initialSpeed * (d.R[vehicle().layout.chassis] * Eigen::Vector3d::UnitX());
+    v.segment<3>(ch.vIndex) = d.R[vehicle().layout.chassis].transpose() * worldVel;
+  }
   for (int w = 0; w < 4; ++w) {
     const vehicle::WheelLayout& wl = vehicle().layout.wheels[w];
     const double rolling = tyre::unloadedRadius(vehicle().wheel(w).tyre) - forces_->wheels()[w].out.deflection;
@@ -252,6 +283,21 @@ Simulation::ChassisState Simulation::chassisState() const {
   // From the coordinates directly (no kinematic pass): the free joint holds
   // the chassis position and attitude, its velocity is in chassis axes.
   const integ::SolutionPoint& p = integrator_->current();
+  if (vehicle().planar) {
+    // The planar joint: (x, y, yaw) and (forward, sideways, yaw rate) of the
+    // base; the centre of mass where it sits on the base at rest.
+    const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
+    const double* qb = p.q.data() + b.qIndex;
+    const double u = p.v(b.vIndex), r = p.v(b.vIndex + 2);
+    const Eigen::Vector3d c = vehicle().planar->comInBase;
+    const double cy = std::cos(qb[2]), sy = std::sin(qb[2]);
+    ChassisState s;
+    s.com = Eigen::Vector3d(qb[0] + cy * c.x() - sy * c.y(), qb[1] + sy * c.x() + cy * c.y(), c.z());
+    s.yaw = qb[2];
+    s.vx = u - r * c.y();
+    s.yawRate = r;
+    return s;
+  }
   const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
   const double* qc = p.q.data() + ch.qIndex;
   const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).toRotationMatrix();
@@ -302,6 +348,13 @@ integ::StepReport Simulation::step() {
   bool grounded = false;
   for (const vehicle::WheelContact& w : forces_->wheels()) grounded = grounded || w.plane.valid;
   airborne_ = grounded ? 0.0 : airborne_ + h;
+  if (vehicle().planar) {
+    if (const std::optional<std::string> off = offLevelGround()) {
+      r.status = integ::StepStatus::StateCheckFailed;
+      r.message.set("%s", off->c_str());
+      return r;
+    }
+  }
   if (airborne_ > kMaxAirborne) {
     const Eigen::Vector3d com = chassisState().com;
     r.status = integ::StepStatus::StateCheckFailed;
@@ -310,6 +363,28 @@ integ::StepReport Simulation::step() {
                   kMaxAirborne, com.x(), com.y(), com.z(), time());
   }
   return r;
+}
+
+std::optional<std::string> Simulation::offLevelGround() const {
+  // The planar model has no heave, roll or pitch of its base: the ground
+  // under every wheel must be its road plane, or the run stops saying so.
+  static const char* kCorner[4] = {"FL", "FR", "RL", "RR"};
+  const double road = vehicle().model.bodies[vehicle().layout.base].inParent.origin.z();
+  for (int w = 0; w < 4; ++w) {
+    const tyre::ContactPlane& g = forces_->wheels()[w].plane;
+    const double rise = g.valid ? g.point.z() - road : NAN;
+    if (g.valid && std::abs(rise) <= kPlanarRoadHeight && g.normal.z() >= std::cos(kPlanarRoadSlope)) continue;
+    char buf[300];
+    std::snprintf(buf, sizeof buf,
+                  "the planar model left level ground at t = %.2f s: under wheel %s at x = %.1f m, y = %.1f m the "
+                  "ground %s; [fidelity] suspension = planar drives on level ground only (use kinematic or linkage)",
+                  time(), kCorner[w], g.point.x(), g.point.y(),
+                  !g.valid ? "is missing"
+                           : (std::abs(rise) > kPlanarRoadHeight ? (rise > 0 ? "rises above the road plane" : "drops below the road plane")
+                                                                 : "slopes"));
+    return std::string(buf);
+  }
+  return std::nullopt;
 }
 
 RunState Simulation::save() {

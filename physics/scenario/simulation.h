@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "integrator/step_types.h"
 #include "multibody/multibody_dae.h"
@@ -30,6 +31,7 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/kinematic_model.h"
+#include "vehicle/planar_model.h"
 #include "vehicle/vehicle_forces.h"
 #include "vehicle/vehicle_sample.h"
 
@@ -167,6 +169,12 @@ class Simulation {
   // off a ramp lasts well under kMaxAirborne.
   double airborne_ = 0;
   static constexpr double kMaxAirborne = 3.0;  // s
+  // How far the ground under a planar model's wheel may leave its road plane:
+  // a rough road's or a curb's height, or a slope, needs a rung with heave,
+  // roll and pitch.
+  std::optional<std::string> offLevelGround() const;
+  static constexpr double kPlanarRoadHeight = 0.005;        // m
+  static constexpr double kPlanarRoadSlope = 0.5 * M_PI / 180;  // rad
 };
 
 // The vehicle width used for the ISO course: overall width over the tyres.

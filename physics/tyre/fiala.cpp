@@ -58,7 +58,7 @@ double highSpeedWeight(const FialaParams& p, double absVx) {
 }
 
 TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prev,
-                               double h) const {
+                               double h, std::optional<double> load) const {
   TyreOutput out;
   out.slipState = prev;
   if (!g.valid) {
@@ -78,7 +78,7 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   const Vec3 d = n.cross(xc);         // down in the wheel plane
   const double R0 = p_.unloadedRadius;
   const Vec3 bottom = w.centre + R0 * d;
-  const double delta = (g.point - bottom).dot(ez);
+  double delta = (g.point - bottom).dot(ez);
   const Vec3 yc = ez.cross(xc);
   const Vec3& v = w.centreVelocity;
   const double vx = v.dot(xc), vy = v.dot(yc), vz = v.dot(ez);
@@ -86,12 +86,13 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   // kContactSmoothing newtons: a wheel striking a curb or landing switches
   // contact inside a step, and Newton cannot converge across a kink. The
   // difference is eps^2 / (4 Fz): below 0.01 N at the loads of a manoeuvre.
-  const double raw = p_.verticalStiffness * delta - p_.verticalDamping * vz;
-  if (delta <= -kAirborneClearance || raw < -1e3 * kContactSmoothing) {
+  const double raw = load ? *load : p_.verticalStiffness * delta - p_.verticalDamping * vz;
+  if ((!load && delta <= -kAirborneClearance) || raw < -1e3 * kContactSmoothing) {
     out.slipState = SlipState{};
     return out;
   }
   const double Fz = 0.5 * (raw + std::sqrt(raw * raw + kContactSmoothing * kContactSmoothing));
+  if (load) delta = Fz / p_.verticalStiffness;
 
   const double vsx = vx - w.spinRate * (R0 - delta);
   const double vsy = vy;

@@ -16,6 +16,8 @@
 // stays within friction. Above lowSpeedBlend[1] the law is exactly the spec's.
 #pragma once
 
+#include <optional>
+
 #include "tyre/tyre.h"
 
 namespace bdfcar::tyre {
@@ -56,7 +58,7 @@ class FialaTyre {
  public:
   explicit FialaTyre(const FialaParams& p) : p_(p) {}
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                      double h) const;
+                      double h, std::optional<double> load = std::nullopt) const;
   double unloadedRadius() const { return p_.unloadedRadius; }
   double width() const { return p_.width; }
   const FialaParams& params() const { return p_; }

@@ -6,6 +6,10 @@ double unloadedRadius(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.unloadedRadius; }, p);
 }
 
+double verticalStiffness(const TyreParams& p) {
+  return std::visit([](const auto& m) { return m.verticalStiffness; }, p);
+}
+
 double width(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.width; }, p);
 }
@@ -20,8 +24,8 @@ Tyre::Tyre(const TyreParams& p)
       radius_(tyre::unloadedRadius(p)) {}
 
 TyreOutput Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                          double h) const {
-  return std::visit([&](const auto& m) { return m.evaluate(wheel, ground, previous, h); }, model_);
+                          double h, std::optional<double> load) const {
+  return std::visit([&](const auto& m) { return m.evaluate(wheel, ground, previous, h, load); }, model_);
 }
 
 }  // namespace bdfcar::tyre

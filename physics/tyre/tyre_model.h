@@ -15,15 +15,19 @@ using TyreParams = std::variant<FialaParams>;
 
 double unloadedRadius(const TyreParams& p);
 double width(const TyreParams& p);
+double verticalStiffness(const TyreParams& p);  // N/m
 
 // One tyre: its model with its data. `previous` are the transient slips at
 // the last accepted step, h the time since then (the evaluation integrates
-// them by backward Euler, so it is implicit in the current state).
+// them by backward Euler, so it is implicit in the current state). `load`:
+// a normal load given by the model (the planar vehicle's load transfer)
+// instead of the one from the tyre's deflection; the deflection is then
+// load / vertical stiffness (the rolling radius follows the load).
 class Tyre {
  public:
   explicit Tyre(const TyreParams& p);
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                      double h) const;
+                      double h, std::optional<double> load = std::nullopt) const;
   double unloadedRadius() const { return radius_; }
 
  private:

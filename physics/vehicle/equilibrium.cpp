@@ -25,9 +25,10 @@ void addDrivenCoordinates(const mb::Model& m, std::vector<int>& held) {
 }  // namespace
 
 std::vector<int> heldCoordinates(const Vehicle& v) {
-  const mb::Body& ch = v.model.bodies[v.layout.chassis];
-  // Free joint velocity order: linear (body x, y, z), angular (roll, pitch, yaw).
-  std::vector<int> held = {ch.vIndex + 0, ch.vIndex + 1, ch.vIndex + 5};
+  const mb::Body& base = v.model.bodies[v.layout.base];
+  // Free joint velocity order: linear (body x, y, z), angular (roll, pitch,
+  // yaw); a planar joint has x, y and yaw only.
+  std::vector<int> held = {base.vIndex + 0, base.vIndex + 1, base.vIndex + (base.joint == mb::JointType::Planar ? 2 : 5)};
   addDrivenCoordinates(v.model, held);
   for (const WheelLayout& w : v.layout.wheels) held.push_back(w.spinV);
   std::sort(held.begin(), held.end());
@@ -57,8 +58,8 @@ std::vector<int> loopRows(const mb::Model& m) {
 bool assemble(const Vehicle& v, integ::Dae& dae, double t, Vec& q, std::string& message) {
   const integ::DaeSizes n = dae.sizes();
   std::vector<int> held;
-  const mb::Body& ch = v.model.bodies[v.layout.chassis];
-  for (int i = 0; i < ch.nv; ++i) held.push_back(ch.vIndex + i);
+  const mb::Body& base = v.model.bodies[v.layout.base];
+  for (int i = 0; i < base.nv; ++i) held.push_back(base.vIndex + i);
   addDrivenCoordinates(v.model, held);
   std::sort(held.begin(), held.end());
   const std::vector<int> free = complement(n.nv, held), rows = loopRows(v.model);

@@ -12,6 +12,7 @@
 #include "multibody/model_error.h"
 #include "multibody/multibody_dae.h"
 #include "vehicle/equilibrium.h"
+#include "vehicle/mass_moments.h"
 #include "vehicle/motion_ratio.h"
 
 namespace bdfcar::vehicle {
@@ -146,24 +147,6 @@ class LinkageSweep {
 Vec3 zxyAngles(const Mat3& M) {
   return Vec3(std::atan2(-M(0, 1), M(1, 1)), std::asin(std::clamp(M(2, 1), -1.0, 1.0)), std::atan2(-M(2, 0), M(2, 2)));
 }
-
-// Mass, first moment and inertia about the chassis origin of a set of rigid
-// bodies in the chassis frame: sums and differences of rigid bodies.
-struct MassMoments {
-  double m = 0;
-  Vec3 h = Vec3::Zero();
-  Mat3 I = Mat3::Zero();
-  void add(double mass, const Vec3& com, const Mat3& inertiaAtCom, double sign = 1.0) {
-    m += sign * mass;
-    h += sign * mass * com;
-    I += sign * (inertiaAtCom + mass * (com.squaredNorm() * Mat3::Identity() - com * com.transpose()));
-  }
-  Vec3 com() const { return h / m; }
-  Mat3 inertiaAtCom() const {
-    const Vec3 c = com();
-    return I - m * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
-  }
-};
 
 // What the sweep gives one corner: per table component, the samples on the grid.
 struct CornerTable {
@@ -320,13 +303,7 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
   rack.parent = L.chassis;
   L.rack = mbld.addBody(rack);
   specs.push_back(link.spec.bodies[LL.rack]);
-  {
-    mb::CutJoint drv;
-    drv.name = "rack_travel";
-    drv.type = mb::CutJointType::Driver;
-    drv.drivenBody = L.rack;
-    mbld.addCutJoint(drv);
-  }
+  addRackDriver(mbld, "rack_travel", L.rack);
 
   std::array<int, 4> carrierIndex{};
   for (int w = 0; w < 4; ++w) {
@@ -353,12 +330,7 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
     cs.joint.parent = link.spec.bodies[LL.chassis].name;
     specs.push_back(cs);
     if (c.steered) {
-      mb::CutJoint drv;
-      drv.name = std::string("rack_travel_") + kCorner[w];
-      drv.type = mb::CutJointType::Driver;
-      drv.drivenBody = carrierIndex[w];
-      drv.drivenCoordinate = 1;
-      mbld.addCutJoint(drv);
+      addRackDriver(mbld, std::string("rack_travel_") + kCorner[w], carrierIndex[w], 1);
     }
     mb::Body wheel = lm.bodies[LL.wheels[w].spindle];
     wheel.parent = carrierIndex[w];
@@ -382,15 +354,7 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
   for (int w = 0; w < 4; ++w)
     for (int k : sw.corners[w].springs) out.spec.springs.push_back(link.spec.springs[k]);
   out.model = mbld.build();
-  L.rackQ = out.model.bodies[L.rack].qIndex;
-  L.rackV = out.model.bodies[L.rack].vIndex;
-  L.rackAxisSign = LL.rackAxisSign;
-  L.rackDriverSlot = 0;
-  L.cutJointEquations = 0;
-  for (WheelLayout& wl : L.wheels) {
-    wl.spinV = out.model.bodies[wl.spindle].vIndex;
-    ++L.spinCoordinates;
-  }
+  indexDerivedLayout(out, LL.rackAxisSign);
   return out;
 }
 

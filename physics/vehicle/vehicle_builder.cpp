@@ -22,7 +22,14 @@ Mat3 jointAxes(const JointSpec& j) {
 
 }  // namespace
 
-const char* fidelityName(Fidelity f) { return f == Fidelity::Kinematic ? "kinematic" : "linkage"; }
+const char* fidelityName(Fidelity f) {
+  switch (f) {
+    case Fidelity::Linkage: return "linkage";
+    case Fidelity::Kinematic: return "kinematic";
+    case Fidelity::Planar: return "planar";
+  }
+  return "?";
+}
 
 Vehicle buildVehicle(const VehicleSpec& spec) {
   Vehicle out;
@@ -161,6 +168,29 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
   return out;
 }
 
+void addRackDriver(mb::ModelBuilder& builder, const std::string& name, int body, int coordinate) {
+  mb::CutJoint drv;
+  drv.name = name;
+  drv.type = mb::CutJointType::Driver;
+  drv.drivenBody = body;
+  drv.drivenCoordinate = coordinate;
+  builder.addCutJoint(drv);
+}
+
+void indexDerivedLayout(Vehicle& v, double rackAxisSign) {
+  VehicleLayout& L = v.layout;
+  L.rackQ = v.model.bodies[L.rack].qIndex;
+  L.rackV = v.model.bodies[L.rack].vIndex;
+  L.rackAxisSign = rackAxisSign;
+  L.rackDriverSlot = 0;
+  L.cutJointEquations = 0;
+  L.spinCoordinates = 0;
+  for (WheelLayout& wl : L.wheels) {
+    wl.spinV = v.model.bodies[wl.spindle].vIndex;
+    ++L.spinCoordinates;
+  }
+}
+
 void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x) {
   for (const mb::CutJoint& c : v.model.cutJoints)
     if (c.type == mb::CutJointType::Driver) q(v.model.bodies[c.drivenBody].qIndex + c.drivenCoordinate) = x;
@@ -168,7 +198,7 @@ void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x) {
 
 Eigen::VectorXd designPositions(const Vehicle& v) {
   Eigen::VectorXd q = mb::neutralPositions(v.model);
-  q(v.model.bodies[0].qIndex + 2) = v.spec.designHeight;
+  if (v.model.bodies[0].joint == mb::JointType::Free) q(v.model.bodies[0].qIndex + 2) = v.spec.designHeight;
   return q;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "multibody/model.h"
 #include "vehicle/vehicle_spec.h"
@@ -25,7 +26,8 @@ struct LinkDrawing {
 };
 
 struct VehicleLayout {
-  int chassis = 0;
+  int chassis = 0;             // the sprung body (telemetry, drag, drive reaction)
+  int base = 0;                // the body on the ground joint: the chassis, or a planar model's base
   int rack = -1, rackQ = -1, rackV = -1;
   double rackAxisSign = 1.0;   // rack coordinate direction along chassis +y
   int rackDriverSlot = 0;
@@ -37,8 +39,25 @@ struct VehicleLayout {
 
 // The rungs of the fidelity ladder (docs/DESIGN.md): the linkage as the
 // vehicle file describes it, or models derived from it (kinematic_model.h).
-enum class Fidelity { Linkage, Kinematic };
+enum class Fidelity { Linkage, Kinematic, Planar };
 const char* fidelityName(Fidelity f);
+
+// A planar model's load transfer (planar_model.h), derived from the linkage:
+// the tyre loads are the static ones plus what the corner springs under the
+// rolled and pitched body and the roll centres carry. Corners FL FR RL RR,
+// axles front and rear.
+struct PlanarLoads {
+  std::array<double, 4> staticLoad{};  // N
+  std::array<double, 4> rate{};        // N/m, wheel rate in series with the tyre's vertical rate
+  std::array<double, 4> damping{};     // N s/m, at the wheel
+  std::array<Vec3, 4> sprungPoint{};   // corner point on the sprung body (its frame), above the contact point
+  std::array<Vec3, 4> basePoint{};     // the same point on the base (its frame)
+  std::array<double, 2> rollCentreHeight{};  // m above the ground
+  std::array<double, 2> track{};       // m, between the contact points
+  double wheelbase = 0;                // m
+  double axisHeight = 0;               // m, roll and pitch axes above the ground
+  Vec3 comInBase = Vec3::Zero();       // the vehicle's centre of mass in the base frame at rest
+};
 
 // A plain value: copies stay valid (the layout holds indices, no pointers).
 struct Vehicle {
@@ -46,6 +65,7 @@ struct Vehicle {
   VehicleSpec spec;
   mb::Model model;
   VehicleLayout layout;
+  std::optional<PlanarLoads> planar;   // a planar model's tyre loads
   // The data of wheel w (0..3: FL, FR, RL, RR).
   const WheelSpec& wheel(int w) const { return spec.wheels[w]; }
 };
@@ -53,11 +73,18 @@ struct Vehicle {
 // Builds the model; throws mb::ModelError naming the offending element.
 Vehicle buildVehicle(const VehicleSpec& spec);
 
+// For the models derived from a linkage (kinematic_model.h, planar_model.h):
+// a driver tying coordinate `coordinate` of `body` to the rack signal, and the
+// layout's indices once the model is built (rack, spins; no loop equations).
+void addRackDriver(mb::ModelBuilder& builder, const std::string& name, int body, int coordinate = 0);
+void indexDerivedLayout(Vehicle& v, double rackAxisSign);
+
 // Sets the rack coordinate of q (and every coordinate a rack driver ties to
 // it: a kinematic model's steered corners) to x, m along the rack's axis.
 void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x);
 
-// Positions at design with the chassis frame at (0, 0, designHeight).
+// Positions at design with the chassis frame at (0, 0, designHeight) (a
+// planar model: its base at the origin of its plane, unrolled).
 Eigen::VectorXd designPositions(const Vehicle& v);
 
 }  // namespace bdfcar::vehicle

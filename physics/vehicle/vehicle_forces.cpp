@@ -99,14 +99,51 @@ double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) 
   return -c.brakeCapacity * std::tanh(t / c.brakeCapacity);
 }
 
+void VehicleForces::planarLoads(mb::Data& d, double h) {
+  const PlanarLoads& P = *vehicle_.planar;
+  const int base = vehicle_.layout.base, sprung = vehicle_.layout.chassis;
+  const Eigen::Vector3d up = d.R[base].col(2);
+  // Corner springs: the sprung body's height over each corner relative to the base.
+  for (int w = 0; w < 4; ++w) {
+    const Eigen::Vector3d ps = mb::pointPosition(d, sprung, P.sprungPoint[w]);
+    const Eigen::Vector3d pb = mb::pointPosition(d, base, P.basePoint[w]);
+    const double z = up.dot(ps - pb);
+    const double zd = up.dot(mb::pointVelocity(d, sprung, P.sprungPoint[w]) - mb::pointVelocity(d, base, P.basePoint[w]));
+    const double f = -(P.rate[w] * z + P.damping[w] * zd);  // + pushes the body up and the tyre down
+    mb::addWorldForce(d, sprung, ps, f * up);
+    mb::addWorldForce(d, base, pb, -f * up);
+    wheels_[w].modelLoad = P.staticLoad[w] + f;
+  }
+  // The roll centres: each axle's lateral tyre force at its roll-centre
+  // height, the longitudinal ones at the axis height, from the tyres at the
+  // spring loads (an axle's lateral force hardly depends on how its load is
+  // split between its wheels).
+  const Eigen::Vector3d fwd = d.R[base].col(0), left = d.R[base].col(1);
+  double lateral[2] = {0, 0}, longitudinal = 0;
+  for (int w = 0; w < 4; ++w) {
+    const WheelContact& c = wheels_[w];
+    const tyre::TyreOutput o = tyres_[w].evaluate(wheelKinematics(d, w), c.plane, c.slip, h, c.modelLoad);
+    lateral[w / 2] += left.dot(o.force);
+    longitudinal += fwd.dot(o.force);
+  }
+  for (int a = 0; a < 2; ++a) {
+    const double shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
+    wheels_[2 * a].modelLoad -= shift;
+    wheels_[2 * a + 1].modelLoad += shift;
+  }
+  const double pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
+  for (int w = 0; w < 4; ++w) wheels_[w].modelLoad += w < 2 ? -pitch : pitch;
+}
+
 void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   const double h = std::max(0.0, t - lastAccepted_);
+  if (vehicle_.planar) planarLoads(d, h);
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];
     const tyre::WheelKinematics k = wheelKinematics(d, w);
     c.spinRate = k.spinRate;
-    c.out = tyres_[w].evaluate(k, c.plane, c.slip, h);
+    c.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));
     if (c.out.inContact) mb::addWorldWrench(d, wl.spindle, c.out.point, c.out.force, c.out.moment);
     // Brakes react on the carrier (caliper on the upright): a joint torque.
     d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, relativeSpin(d, w), h);
@@ -138,7 +175,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
     // Transient slips matter only in the low-speed range (the last
     // evaluation's state says whether the wheel is in it).
     if (c.out.slipState.active || !c.out.inContact)
-      c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h).slipState;
+      c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
     else
       c.slip.active = false;
     // Ground under the wheel at the end of the next step.

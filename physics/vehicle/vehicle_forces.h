@@ -9,6 +9,9 @@
 // inside the residual (implicit), which is what keeps the stiff slip dynamics
 // (h * lambda ~ 6 at 10 ms) stable.
 //
+// A planar model (no vertical motion) gives each tyre its normal load from
+// its load transfer instead of the tyre's deflection: see planarLoads.
+//
 // Drive torques react where the vehicle file says (chassis, carrier or nowhere).
 // Brakes hold without creep: the brake torque is a stiff torsional spring
 // (with damping) on the spin angle since the wheel last slipped, saturated
@@ -40,6 +43,7 @@ struct WheelContact {
   double brakeCapacity = 0;      // N m available now
   tyre::TyreOutput out;          // of the latest evaluation
   double spinRate = 0;           // absolute, rad/s (latest evaluation)
+  double modelLoad = 0;          // N, a planar model's normal load (latest evaluation)
   bool operator==(const WheelContact&) const = default;
 };
 
@@ -84,6 +88,12 @@ class VehicleForces final : public mb::ForceProvider {
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double brakeTorque(const WheelContact& c, double relativeSpin, double h) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
+  // A planar model's normal loads (PlanarLoads): the corner springs' forces
+  // go on the sprung body and the base, the loads into wheels_[w].modelLoad.
+  void planarLoads(mb::Data& data, double h);
+  std::optional<double> modelLoad(int w) const {
+    return vehicle_.planar ? std::optional<double>(wheels_[w].modelLoad) : std::nullopt;
+  }
 
   const Vehicle& vehicle_;
   const terrain::Terrain& terrain_;
