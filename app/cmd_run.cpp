@@ -43,6 +43,10 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
               spec.name.c_str(), r.steps, spec.integrator.step, c.newtonIterations, c.jacobians, c.columnRefreshes,
               c.factorizations, c.refreshes, c.rescues, c.splits, perStepUs, cost.p50, cost.p99, cost.max,
               r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
+  if (spec.fidelity.automatic) {
+    std::printf("fidelity auto: %ld switch%s; steps on the linkage %ld, kinematic %ld, planar %ld\n", r.fidelitySwitches,
+                r.fidelitySwitches == 1 ? "" : "es", r.stepsPerModel[0], r.stepsPerModel[1], r.stepsPerModel[2]);
+  }
   if (r.course) {
     const auto& cr = *r.course;
     std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",

@@ -16,8 +16,13 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--jacobian-every", ov.jacobianEvery, "Jacobian every N steps (0 = first step only)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--fidelity", ov.fidelity,
-                 "Suspension model: linkage (the vehicle file's), kinematic or planar (derived from it at load time)")
-      ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
+                 "Suspension model: linkage (the vehicle file's), kinematic or planar (derived from it at load "
+                 "time), or auto (the cheapest within --error-budget, switched in mid-run where the scene needs it)")
+      ->check(CLI::IsMember({"linkage", "kinematic", "planar", "auto"}));
+  cmd.add_option("--error-budget", ov.errorBudget,
+                 "With --fidelity auto: the error allowed against the linkage, % of peak (RMS of yaw rate and "
+                 "lateral acceleration; default 10: the planar model where the scene allows it)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
   cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
   cmd.add_flag("--as-published", ov.asPublished,
@@ -40,7 +45,8 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.jacobianEvery) bdf.jacobianEvery = *ov.jacobianEvery;
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
-  if (ov.fidelity) scenario::parseFidelity(*ov.fidelity, spec.fidelity.suspension);
+  if (ov.fidelity) scenario::parseFidelity(*ov.fidelity, spec.fidelity);
+  if (ov.errorBudget) spec.fidelity.errorBudget = *ov.errorBudget / 100.0;
   if (ov.settle) spec.settleTime = *ov.settle;
   if (ov.asPublished) bdf.refreshWhenNotContracting = false;
   if (scenario::stepsPerTick(spec.tick, it.step) == 0) {

@@ -11,7 +11,7 @@
 namespace bdfcar::app {
 
 struct ScenarioOverrides {
-  std::optional<double> step, tick, duration, settle;
+  std::optional<double> step, tick, duration, settle, errorBudget;
   std::optional<std::string> integrator, vehicle, fidelity;
   std::optional<int> order, newton, jacobianEvery;
   bool asPublished = false;  // the paper's Newton as published: no refresh when it stops contracting

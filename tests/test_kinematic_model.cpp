@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include "multibody/multibody_dae.h"
 #include "terrain/terrain.h"
@@ -74,6 +77,64 @@ TEST_P(KinematicModel, SettlesWhereTheLinkageSettles) {
 
 INSTANTIATE_TEST_SUITE_P(ReferenceVehicles, KinematicModel,
                          ::testing::Values("vehicles/sedan.toml", "vehicles/paper.toml"));
+
+}  // namespace
+}  // namespace bdfcar
+
+namespace bdfcar {
+namespace {
+
+// The derivation cache (vehicle/derivation_cache.h): a second derivation
+// reads the sweep from disk and gives the same model bit for bit; a corrupt
+// entry is a miss (derived again, the same model); another vehicle has
+// another key.
+TEST(DerivationCache, GivesTheSameModelAndSurvivesACorruptEntry) {
+  const std::string dir = (std::filesystem::temp_directory_path() / "bdfcar_derivation_cache_test").string();
+  std::filesystem::remove_all(dir);
+  ::setenv("BDFCAR_CACHE_DIR", dir.c_str(), 1);
+  const vehicle::Vehicle link = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/sedan.toml")));
+  const vehicle::KinematicDerivation fresh = vehicle::deriveKinematic(link);
+  const vehicle::KinematicDerivation cached = vehicle::deriveKinematic(link);
+  EXPECT_FALSE(fresh.fromCache);
+  EXPECT_TRUE(cached.fromCache);
+  ASSERT_TRUE(std::filesystem::exists(cached.cacheFile)) << cached.cacheFile;
+  auto same = [](const vehicle::KinematicDerivation& a, const vehicle::KinematicDerivation& b) {
+    EXPECT_EQ(a.carrierMass, b.carrierMass);
+    EXPECT_EQ(a.check.wheelCentre, b.check.wheelCentre);
+    EXPECT_EQ(a.check.toe, b.check.toe);
+    EXPECT_EQ(a.sweepConfigurations, b.sweepConfigurations);
+    ASSERT_EQ(a.vehicle.model.tables.size(), b.vehicle.model.tables.size());
+    mb::SplineGrid::Sample sa, sb;
+    for (size_t t = 0; t < a.vehicle.model.tables.size(); ++t)
+      for (double s : {-0.1, -0.013, 0.0, 0.042, 0.11})
+        for (double r : {-0.05, 0.0, 0.021}) {
+          a.vehicle.model.tables[t].grid.eval(s, r, sa);
+          b.vehicle.model.tables[t].grid.eval(s, r, sb);
+          EXPECT_EQ(sa.f, sb.f);
+          EXPECT_EQ(sa.grad, sb.grad);
+        }
+  };
+  same(fresh, cached);
+  // Flip a byte in the middle of the entry.
+  {
+    std::fstream f(cached.cacheFile, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(4000);
+    char c = 0;
+    f.get(c);
+    f.seekp(4000);
+    f.put(static_cast<char>(c ^ 0x40));
+  }
+  const vehicle::KinematicDerivation again = vehicle::deriveKinematic(link);
+  EXPECT_FALSE(again.fromCache);
+  same(fresh, again);
+  // Truncated: a miss too.
+  std::filesystem::resize_file(cached.cacheFile, 100);
+  EXPECT_FALSE(vehicle::deriveKinematic(link).fromCache);
+  const vehicle::Vehicle paper = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/paper.toml")));
+  EXPECT_NE(vehicle::deriveKinematic(paper).cacheFile, cached.cacheFile);
+  ::unsetenv("BDFCAR_CACHE_DIR");
+  std::filesystem::remove_all(dir);
+}
 
 }  // namespace
 }  // namespace bdfcar

@@ -1,12 +1,14 @@
 // RESULTS.md section: the fidelity ladder. Each rung, derived from the same
 // vehicle file, against the linkage converged at 1 ms: what the reduced model
 // costs per step and how far it is, on smooth manoeuvres and on hard ones.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <vector>
 
 #include "report/studies.h"
 #include "vehicle/kinematic_model.h"
+#include "vehicle/planar_model.h"
 #include "vehicle/vehicle_file.h"
 
 namespace bdfcar::app {
@@ -20,6 +22,12 @@ struct FidelityCase {
 
 scenario::ScenarioSpec withFidelity(scenario::ScenarioSpec s, vehicle::Fidelity f) {
   s.fidelity.suspension = f;
+  return s;
+}
+
+scenario::ScenarioSpec withAuto(scenario::ScenarioSpec s) {
+  s.fidelity.automatic = true;
+  s.fidelity.errorBudget = scenario::kPlanarErrorBound;
   return s;
 }
 
@@ -41,7 +49,8 @@ std::string errorCells(const scenario::RunResult& fine, const scenario::RunResul
 
 void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir) {
   const vehicle::Vehicle sedan = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/sedan.toml")));
-  const vehicle::KinematicDerivation k = vehicle::deriveKinematic(sedan);
+  const vehicle::PlanarDerivation p = vehicle::derivePlanar(sedan);
+  const vehicle::KinematicDerivation& k = p.kinematic;
   md << "## 5b. The fidelity ladder: reduced models derived from the vehicle file\n\n"
      << "`[fidelity] suspension = \"kinematic\"` (or `--fidelity kinematic`) replaces the linkage by a model "
      << "derived from it at load time (physics/vehicle/kinematic_model.h): a quasi-static sweep of the linkage "
@@ -51,6 +60,15 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "parameter is entered by hand. `bdfcar info assets/vehicles/sedan.toml --fidelity kinematic` prints "
      << "the derivation and its check against the linkage:\n\n```\n"
      << vehicle::describeKinematic(k) << "```\n\n"
+     << "`planar` (physics/vehicle/planar_model.h) is derived from the kinematic rung: a two-track model on "
+     << "level ground, the sprung body rolling and pitching on a base that moves in the road plane, the tyre "
+     << "loads from the static loads, corner springs (wheel rate in series with the tyre) and the roll "
+     << "centres (instant centres of the tables). `--fidelity planar`:\n\n```\n"
+     << vehicle::describePlanar(p) << "```\n\n"
+     << "`auto` (`--fidelity auto`, error budget 10 %: the planar model's bound) drives on the planar model "
+     << "and switches to the kinematic one where the road ahead leaves the road plane or a tyre nears its "
+     << "limit, and back after a calm second (scenario/fidelity_policy.h); the label gives its share of steps "
+     << "on the planar model and its switches.\n\n"
      << "Each rung at 10 ms with the default policy (2 Newton iterations, Jacobian every 200 steps), and the "
      << "kinematic rung converged (1 ms, Newton to tolerance, Jacobian every step: its modelling error alone), "
      << "against the linkage converged at 1 ms; sedan.toml. Wall time per manoeuvre step (median of " << repeats
@@ -76,7 +94,7 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
       continue;
     }
     struct Row {
-      const char* label;
+      std::string label;
       scenario::ScenarioSpec spec;
       bool timed;
     };
@@ -91,14 +109,27 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
          withIntegrator(withFidelity(base, vehicle::Fidelity::Kinematic), scenario::IntegratorMethod::Bdf, 0.001, 2, 0,
                         1),
          false},
+        {"planar, 10 ms",
+         withIntegrator(withFidelity(base, vehicle::Fidelity::Planar), scenario::IntegratorMethod::Bdf, 0.01, 2, 2, 200),
+         true},
+        {"auto, 10 ms", withIntegrator(withAuto(base), scenario::IntegratorMethod::Bdf, 0.01, 2, 2, 200), true},
     };
     bool first = true;
     for (const Row& row : rows) {
       const RunSummary r = runRepeated(row.spec, row.timed ? repeats : 1);
-      md << "| " << (first ? c.name : std::string()) << " | " << row.label << " | ";
+      std::string label = row.label;
+      if (row.spec.fidelity.automatic && r.result.ok) {
+        const auto& m = r.result.stepsPerModel;
+        const double planarShare = 100.0 * m[2] / std::max(1L, m[0] + m[1] + m[2]);
+        label += fmt(" (planar %.0f %%, ", planarShare) + std::to_string(r.result.fidelitySwitches) + " switches)";
+      }
+      md << "| " << (first ? c.name : std::string()) << " | " << label << " | ";
       first = false;
       if (!r.result.ok) {
-        md << divergedCell(r.result) << " |||||\n";
+        const bool offRoad = r.result.failure.find("left level ground") != std::string::npos;
+        md << (offRoad ? "stops at t = " + fmt("%.2f s", r.result.failureTime) + ": the ground is not level"
+                       : divergedCell(r.result))
+           << " |||||\n";
         continue;
       }
       md << (row.timed ? fmt("%.1f", r.wallPerStepUs) : std::string("-")) << " | "
@@ -123,32 +154,48 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "outside the travel direction go to the carrier and the chassis, and the elastic and friction "
      << "forces of the joints, which the linkage does not model either. Its cost per step is the remaining "
      << "question: the tyres, the terrain queries and the integrator's fixed work are the same for every rung, "
-     << "so removing the loop constraints alone does not reach the 1 us per step of the 10,000x target.\n\n";
-  command(md, "assets/scenarios/lane_change.toml --fidelity kinematic");
+     << "so removing the loop constraints alone does not reach the 1 us per step of the 10,000x target.\n"
+     << "\nThe planar rung stops where the ground is not level (the curb, the rough road, the ramp): it has no "
+     << "heave, roll or pitch of its base, and says so instead of driving through. `auto` drives those on the "
+     << "kinematic model where it must and on the planar model elsewhere.\n\n";
+  command(md, "assets/scenarios/lane_change.toml --fidelity auto");
   // Overlay: the lane change, linkage converged against each rung at 10 ms.
-  if (plotT.size() == 3) {
+  // The series: the converged linkage, then each timed row (linkage, kinematic, planar, auto at 10 ms).
+  const std::vector<std::string> series = {"linkage, 1 ms converged", "linkage, 10 ms", "kinematic, 10 ms",
+                                           "planar, 10 ms", "auto, 10 ms"};
+  if (plotT.size() == series.size()) {
     const std::string data = imageDir + "/fidelity_lane_change.csv";
+    size_t n = plotT[0].size();
+    for (const auto& t : plotT) n = std::min(n, t.size());
     {
       std::ofstream d(data);
-      d << "t,yaw_fine,yaw_link,yaw_kin,ay_fine,ay_link,ay_kin\n";
-      const size_t n = std::min({plotT[0].size(), plotT[1].size(), plotT[2].size()});
+      d << "t";
+      for (size_t k = 0; k < series.size(); ++k) d << ",yaw" << k;
+      for (size_t k = 0; k < series.size(); ++k) d << ",ay" << k;
+      d << "\n";
       // The 10 ms runs are sampled at 10 ms as the converged one (output interval): same times.
-      for (size_t i = 0; i < n; ++i)
-        d << plotT[0][i] << "," << plotYaw[0][i] << "," << plotYaw[1][i] << "," << plotYaw[2][i] << "," << plotAy[0][i]
-          << "," << plotAy[1][i] << "," << plotAy[2][i] << "\n";
+      for (size_t i = 0; i < n; ++i) {
+        d << plotT[0][i];
+        for (const auto& y : plotYaw) d << "," << y[i];
+        for (const auto& a : plotAy) d << "," << a[i];
+        d << "\n";
+      }
     }
+    auto lines = [&](size_t firstColumn) {
+      std::string plot = "plot '" + data + "'";
+      for (size_t k = 0; k < series.size(); ++k) {
+        plot += (k ? ", ''" : "") + std::string(" every ::1 using 1:") + std::to_string(firstColumn + k) +
+                (k == 0 ? " w l lw 3 lc rgb '#999999'" : " w l lw 1.5") + (k >= 3 ? " dt 2" : "") + " t '" +
+                series[k] + "'";
+      }
+      return plot + "\n";
+    };
     const std::string png = imageDir + "/fidelity_lane_change.png";
     writePlot(data, png,
-              "set multiplot layout 2,1\nset ylabel 'yaw rate (rad/s)'\nplot '" + data +
-                  "' every ::1 using 1:2 w l lw 3 lc rgb '#999999' t 'linkage, 1 ms converged', '' every ::1 using 1:3 "
-                  "w l lw 1.5 t 'linkage, 10 ms', '' every ::1 using 1:4 w l lw 1.5 dt 2 t 'kinematic, 10 ms'\n"
-                  "set xlabel 'time (s)'\nset ylabel 'a_y (m/s^2)'\nplot '" +
-                  data +
-                  "' every ::1 using 1:5 w l lw 3 lc rgb '#999999' t 'linkage, 1 ms converged', '' every ::1 using "
-                  "1:6 w l lw 1.5 t 'linkage, 10 ms', '' every ::1 using 1:7 w l lw 1.5 dt 2 t 'kinematic, 10 ms'\n"
-                  "unset multiplot\n");
+              "set multiplot layout 2,1\nset ylabel 'yaw rate (rad/s)'\n" + lines(2) +
+                  "set xlabel 'time (s)'\nset ylabel 'a_y (m/s^2)'\n" + lines(2 + series.size()) + "unset multiplot\n");
     std::filesystem::remove(data);
-    md << "![Lane change: the linkage converged, the linkage and the kinematic model at 10 ms]"
+    md << "![Lane change: the linkage converged; the linkage, kinematic, planar and auto models at 10 ms]"
        << "(images/fidelity_lane_change.png)\n\n";
   }
 }

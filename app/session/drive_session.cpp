@@ -87,6 +87,10 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   h.realTimeFactor = realTimeFactor;
   h.stepTime = stepSeconds;
   h.model = vehicle::fidelityName(sim_->vehicle().fidelity);
+  if (sim_->spec().fidelity.automatic) {
+    const long n = sim_->fidelitySwitches();
+    h.model += " (auto, " + std::to_string(n) + (n == 1 ? " switch)" : " switches)");
+  }
   h.throttle = sim_->lastInput().throttle;
   h.brake = sim_->lastInput().brake;
   if (const auto c = run_->course()) {

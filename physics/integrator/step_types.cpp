@@ -25,4 +25,20 @@ bool IntegratorState::operator==(const IntegratorState& o) const {
   return history == o.history && counters == o.counters && stepsSinceJacobian == o.stepsSinceJacobian;
 }
 
+Counters& operator+=(Counters& a, const Counters& b) {
+  a.steps += b.steps;
+  a.substeps += b.substeps;
+  a.newtonIterations += b.newtonIterations;
+  a.residuals += b.residuals;
+  a.jacobianResiduals += b.jacobianResiduals;
+  a.jacobians += b.jacobians;
+  a.columnRefreshes += b.columnRefreshes;
+  a.factorizations += b.factorizations;
+  a.solves += b.solves;
+  a.refreshes += b.refreshes;
+  a.rescues += b.rescues;
+  a.splits += b.splits;
+  return a;
+}
+
 }  // namespace bdfcar::integ

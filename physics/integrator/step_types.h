@@ -56,6 +56,9 @@ struct Counters {
   long splits = 0;            // steps rejected and taken as two half steps
 };
 
+// Work of several integrators (a run that switches between models).
+Counters& operator+=(Counters& a, const Counters& b);
+
 // Everything an integrator carries from one step to the next, as one plain
 // value: the solution history (newest first) and the work counters. What it
 // can recompute (the Jacobian and its factorization) is not part of it: a
@@ -72,6 +75,12 @@ struct Timers {
   double jacobian = 0;          // blocks + LU
   double residual = 0;          // residual evaluations of the Newton iterations
   double backSubstitution = 0;  // right-hand sides, the three solves, updates
+  Timers& operator+=(const Timers& o) {
+    jacobian += o.jacobian;
+    residual += o.residual;
+    backSubstitution += o.backSubstitution;
+    return *this;
+  }
 };
 
 // Common interface of the implicit and explicit integrators.

@@ -40,7 +40,8 @@ Run::~Run() = default;
 
 TelemetryInputs Run::rowInputs() const {
   const DriverInput in = sim_.lastInput();
-  return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_};
+  return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_,
+          static_cast<int>(sim_.vehicle().fidelity)};
 }
 
 void Run::record() {
@@ -67,6 +68,7 @@ bool Run::tick(const std::optional<DriverInput>& input) {
   ++ticks_;
   for (int i = 0; i < sim_.stepsPerTick() && !finished(); ++i) {
     const auto t0 = std::chrono::steady_clock::now();
+    ++modelSteps_[static_cast<int>(sim_.vehicle().fidelity)];
     const integ::StepReport rep = sim_.step();
     if (config_.keepStepCost)
       stepSeconds_.push_back(std::chrono::duration<float>(std::chrono::steady_clock::now() - t0).count());
@@ -197,8 +199,10 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   r.steps = run->steps();
   r.simulatedSeconds = r.steps * sim.spec().integrator.step;
   r.course = run->course();
-  r.counters = sim.integrator().counters();
-  r.timers = sim.integrator().timers();
+  r.counters = sim.counters();
+  r.timers = sim.timers();
+  r.fidelitySwitches = sim.fidelitySwitches();
+  r.stepsPerModel = run->stepsPerModel();
   r.samples = std::move(run->samples());
   r.stepSeconds = std::move(run->stepSeconds());
   r.steerInputs = std::move(run->steerInputs());

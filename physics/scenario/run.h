@@ -8,6 +8,8 @@
 // input recording are the callers' (app/session, app/interactive).
 #pragma once
 
+#include <array>
+
 #include <atomic>
 #include <deque>
 #include <functional>
@@ -55,6 +57,8 @@ struct RunResult {
   std::optional<CourseResult> course;  // when the scenario has a course
   bool interrupted = false;         // ended early on options.stopRequested
   std::vector<float> stepSeconds;   // wall time of each manoeuvre step (per-step cost)
+  long fidelitySwitches = 0;        // model switches under `[fidelity] suspension = "auto"`
+  std::array<long, 3> stepsPerModel{};  // manoeuvre steps per vehicle::Fidelity (linkage, kinematic, planar)
 };
 
 // p50 / p99 / max of per-step wall times, in microseconds.
@@ -94,6 +98,7 @@ class Run {
   bool finished() const { return failed() || steps_ >= totalSteps_; }
   long steps() const { return steps_; }
   long ticks() const { return ticks_; }
+  const std::array<long, 3>& stepsPerModel() const { return modelSteps_; }
   double time() const { return sim_.time(); }
   // Divergences absorbed by going back to a snapshot: how many, the last one
   // in a line for the HUD, and what the integrator said of it.
@@ -140,6 +145,7 @@ class Run {
   std::vector<double> steerInputs_;
   std::vector<float> stepSeconds_;
   long steps_ = 0, ticks_ = 0, totalSteps_ = 0, outputEvery_ = 1;
+  std::array<long, 3> modelSteps_{};
   int lastIterations_ = 0;
   double lastCorrection_ = 0;
   std::string failure_;

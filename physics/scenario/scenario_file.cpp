@@ -19,6 +19,7 @@ const Range kSettle{0.0, 1e4};                     // s (--settle)
 const Range kStep{1e-6, 0.1};                      // s (--step)
 const Range kTick{1e-3, 0.1};                      // s (--tick)
 const Range kOutputInterval{0.0, 1e6, true, true}; // s
+const Range kErrorBudget{0.0, 1.0, true, false};   // fraction of peak ("5 %")
 const Range kSpeed{0.0, 150.0, false, true};       // m/s (540 km/h)
 const Range kPosition{-1e6, 1e6};                  // m
 const Range kHeading{-1e3, 1e3};                   // rad
@@ -126,6 +127,18 @@ bool parseFidelity(const std::string& name, vehicle::Fidelity& out) {
   return true;
 }
 
+bool parseFidelity(const std::string& name, FidelitySpec& out) {
+  out.automatic = name == "auto";
+  return out.automatic || parseFidelity(name, out.suspension);
+}
+
+AutoRungs autoRungs(double errorBudget) {
+  AutoRungs r;
+  if (errorBudget >= kKinematicErrorBound) r.full = vehicle::Fidelity::Kinematic;
+  r.planar = errorBudget >= kPlanarErrorBound;
+  return r;
+}
+
 int stepsPerTick(double tick, double step) {
   if (!(tick > 0) || !(step > 0)) return 0;
   const double n = std::round(tick / step);
@@ -160,8 +173,9 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
   }
   if (auto f = root.optionalTable("fidelity")) {
     const std::string susp = f->string("suspension", "linkage");
-    if (!parseFidelity(susp, s.fidelity.suspension))
-      f->fail("unknown suspension model '" + susp + "': expected linkage, kinematic or planar", "suspension");
+    if (!parseFidelity(susp, s.fidelity))
+      f->fail("unknown suspension model '" + susp + "': expected linkage, kinematic, planar or auto", "suspension");
+    s.fidelity.errorBudget = f->number("error_budget", Dimension::None, kErrorBudget, s.fidelity.errorBudget);
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

@@ -66,9 +66,29 @@ struct CheckSpec {
 
 // What the scene needs of the vehicle model ([fidelity]): the rung of the
 // ladder the vehicle file is turned into (docs/DESIGN.md, "Fidelity").
+// "auto": the cheapest rung whose error bound is within error_budget, and
+// where that is the planar model, the kinematic one wherever the scene needs
+// heave, roll and pitch of the base or is near the tyres' limit, switched in
+// mid-run (scenario/fidelity_policy.h).
 struct FidelitySpec {
   vehicle::Fidelity suspension = vehicle::Fidelity::Linkage;
+  bool automatic = false;
+  double errorBudget = 0.10;  // RMS of peak, yaw rate and lateral acceleration (fraction)
 };
+
+// The bounds each derived rung is held to against the linkage on the
+// reference J-turn and lane change (tests/test_scenario.cpp, Fidelity.*):
+// what `auto` compares the error budget with.
+constexpr double kKinematicErrorBound = 0.003;
+constexpr double kPlanarErrorBound = 0.10;
+
+// What `auto` runs: the full rung it switches up to, and whether it may
+// switch down to the planar model.
+struct AutoRungs {
+  vehicle::Fidelity full = vehicle::Fidelity::Linkage;
+  bool planar = false;
+};
+AutoRungs autoRungs(double errorBudget);
 
 struct ScenarioSpec {
   std::string name, sourceFile;
@@ -91,8 +111,10 @@ struct ScenarioSpec {
   CheckSpec check;
 };
 
-// "linkage" or "kinematic"; false for anything else.
+// "linkage", "kinematic" or "planar"; false for anything else.
 bool parseFidelity(const std::string& name, vehicle::Fidelity& out);
+// Also "auto".
+bool parseFidelity(const std::string& name, FidelitySpec& out);
 
 // Integration steps per driver tick; 0 when the step does not divide the tick.
 int stepsPerTick(double tick, double step);

@@ -13,6 +13,7 @@
 #include "terrain/bullet/bullet_terrain.h"
 #include "terrain/terrain_file.h"
 #include "vehicle/motion_ratio.h"
+#include "vehicle/rung_mapping.h"
 #include "vehicle/vehicle_file.h"
 
 namespace bdfcar::scenario {
@@ -34,7 +35,8 @@ SignalValue RackSignal::at(double t) const {
 bool RunState::operator==(const RunState& o) const {
   return integrator == o.integrator && forces == o.forces && rack == o.rack && speedIntegral == o.speedIntegral &&
          follower == o.follower && input.steer == o.input.steer && input.throttle == o.input.throttle &&
-         input.brake == o.input.brake && scriptedDriver == o.scriptedDriver && airborne == o.airborne;
+         input.brake == o.input.brake && scriptedDriver == o.scriptedDriver && airborne == o.airborne &&
+         rung == o.rung && fidelity == o.fidelity;
 }
 
 std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
@@ -71,17 +73,24 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile));
-  const vehicle::Fidelity rung = spec.fidelity.suspension;
+  const scenario::AutoRungs automatic = autoRungs(spec.fidelity.errorBudget);
+  const vehicle::Fidelity rung = spec.fidelity.automatic ? automatic.full : spec.fidelity.suspension;
   // A derived model names the vehicle file and the rung the scenario asked for.
   auto derive = [&](auto derivation) {
     try {
       return derivation(w->vehicle);
     } catch (const mb::ModelError& e) {
       throw mb::ModelError(spec.vehicleFile + ": " + e.what() + " (the scenario asks for [fidelity] suspension = " +
-                           vehicle::fidelityName(rung) + ")");
+                           (spec.fidelity.automatic ? "auto" : vehicle::fidelityName(rung)) + ")");
     }
   };
-  if (rung == vehicle::Fidelity::Kinematic) {
+  if (spec.fidelity.automatic && automatic.planar) {
+    // Both rungs from one derivation: the planar model is the kinematic one's.
+    vehicle::PlanarDerivation p = derive([](const vehicle::Vehicle& v) { return vehicle::derivePlanar(v); });
+    w->vehicle = std::move(p.kinematic.vehicle);
+    w->kinematicCheck = p.kinematic.check;
+    w->planar = std::move(p.vehicle);
+  } else if (rung == vehicle::Fidelity::Kinematic) {
     vehicle::KinematicDerivation k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
     w->vehicle = std::move(k.vehicle);
     w->kinematicCheck = k.check;
@@ -91,11 +100,10 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     w->kinematicCheck = p.kinematic.check;
   }
   w->terrain = loadGround(spec);
-  if (rung == vehicle::Fidelity::Planar) {
-    // The planar model's road is the level plane through the ground at the start.
-    const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
-    vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
-  }
+  // The planar model's road is the level plane through the ground at the start.
+  const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
+  if (rung == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
+  if (w->planar) vehicle::setPlanarGround(*w->planar, g.hit ? g.point.z() : 0.0);
   if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY);
   return w;
 }
@@ -121,21 +129,18 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       steeringLimits_(steeringLimits(world_->vehicle.spec.steering)) {
   const ScenarioSpec& spec = world_->spec;
   const vehicle::Vehicle& veh = world_->vehicle;
-  vehicle::TerrainContactOptions contact;
-  contact.raysPerWheel = spec.raysPerWheel;
-  forces_ = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
-  dae_ = std::make_unique<mb::MultibodyDae>(veh.model);
-  dae_->addForceProvider(forces_.get());
-  // A wheel's spin column of the Jacobian is dominated by its tyre's slip
-  // stiffness, which collapses when the tyre saturates (a rough road flips
-  // a tyre between the regimes from one step to the next): the integrator
-  // refreshes these columns alone when Newton stalls.
-  std::vector<int> spins;
-  for (const vehicle::WheelLayout& w : veh.layout.wheels) spins.push_back(w.spinV);
-  dae_->setFastColumns(std::move(spins));
-  // Every driver of a vehicle model is the rack's: the rack itself and, in a
-  // kinematic model, the rack travel of each steered corner's table.
-  for (int slot = 0; slot < veh.model.nDrivers; ++slot) dae_->setDriverSignal(slot, &rack_);
+  rungs_.push_back(makeRung(veh));
+  if (world_->planar) {
+    rungs_.push_back(makeRung(*world_->planar));
+    // Contact points relative to the centre of mass, from the planar model's load transfer.
+    const vehicle::PlanarLoads& P = *world_->planar->planar;
+    std::array<Eigen::Vector2d, 4> offsets;
+    std::array<tyre::TyreParams, 4> tyres{veh.wheel(0).tyre, veh.wheel(1).tyre, veh.wheel(2).tyre, veh.wheel(3).tyre};
+    for (int w = 0; w < 4; ++w) offsets[w] = (P.basePoint[w] - P.comInBase).head<2>();
+    policy_.emplace(*world_->terrain, world_->planar->model.bodies[world_->planar->layout.base].inParent.origin.z(),
+                    offsets, tyres);
+  }
+  activate(0);
   if (spec.speedControl.enabled)
     speed_.emplace(spec.speedControl.target, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki});
   if (spec.pathFollower.enabled) {
@@ -148,20 +153,84 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     // Keep 40 % of each lane's spare width for the tracking error.
     follower_.emplace(p, [c = *world_->course, w = vehicleWidth(veh)](double x) { return c.drivingLineY(x, w, 0.6); });
   }
-  makeIntegrator();
 }
 
 Simulation::~Simulation() = default;
 
-void Simulation::makeIntegrator() {
+Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
+  Rung r;
+  r.vehicle = &veh;
+  vehicle::TerrainContactOptions contact;
+  contact.raysPerWheel = spec().raysPerWheel;
+  r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
+  r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
+  r.dae->addForceProvider(r.forces.get());
+  // A wheel's spin column of the Jacobian is dominated by its tyre's slip
+  // stiffness, which collapses when the tyre saturates (a rough road flips
+  // a tyre between the regimes from one step to the next): the integrator
+  // refreshes these columns alone when Newton stalls.
+  std::vector<int> spins;
+  for (const vehicle::WheelLayout& w : veh.layout.wheels) spins.push_back(w.spinV);
+  r.dae->setFastColumns(std::move(spins));
+  // Every driver of a vehicle model is the rack's: the rack itself and, in a
+  // derived model, the rack travel of each steered corner's table.
+  for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
+  r.integrator = makeIntegrator(*r.dae);
+  return r;
+}
+
+std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(mb::MultibodyDae& dae) const {
   const IntegratorSpec& is = spec().integrator;
-  if (is.method == IntegratorMethod::Bdf) {
-    integrator_ = std::make_unique<integ::BdfIntegrator>(*dae_, is.bdf);
-  } else {
-    integ::ExplicitOptions o = is.explicitMethod;
-    o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
-    integrator_ = std::make_unique<integ::ExplicitIntegrator>(*dae_, o);
-  }
+  if (is.method == IntegratorMethod::Bdf) return std::make_unique<integ::BdfIntegrator>(dae, is.bdf);
+  integ::ExplicitOptions o = is.explicitMethod;
+  o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
+  return std::make_unique<integ::ExplicitIntegrator>(dae, o);
+}
+
+void Simulation::activate(int rung) {
+  active_ = rung;
+  forces_ = rungs_[rung].forces.get();
+  dae_ = rungs_[rung].dae.get();
+  integrator_ = rungs_[rung].integrator.get();
+}
+
+void Simulation::switchRung(int rung) {
+  if (rung == active_) return;
+  if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
+  const integ::SolutionPoint from = integrator_->current();
+  Eigen::VectorXd q, v;
+  if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, from.q, from.v, q, v);
+  else vehicle::planarToKinematic(*world_->planar, world_->vehicle, from.q, from.v, q, v);
+  // The force laws' states (contact planes, transient slips, brakes, held
+  // inputs) are per wheel in both models.
+  const vehicle::VehicleForces::State forces = forces_->state();
+  activate(rung);
+  forces_->setState(forces);
+  integ::Message msg;
+  if (integrator_->initialize(from.t, q, v, msg) != integ::EvalStatus::Ok)
+    throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
+                             " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
+  ++policyState_.switches;
+}
+
+void Simulation::chooseRung() {
+  const ChassisState c = chassisState();
+  const FidelityPolicy::Decision d =
+      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, forces_->wheels(), spec().tick);
+  if (d == FidelityPolicy::Decision::Full) switchRung(0);
+  if (d == FidelityPolicy::Decision::Planar) switchRung(1);
+}
+
+integ::Counters Simulation::counters() const {
+  integ::Counters c;
+  for (const Rung& r : rungs_) c += r.integrator->counters();
+  return c;
+}
+
+integ::Timers Simulation::timers() const {
+  integ::Timers t;
+  for (const Rung& r : rungs_) t += r.integrator->timers();
+  return t;
 }
 
 Simulation::StartPose Simulation::startPose() const {
@@ -196,6 +265,9 @@ Simulation::StartPose Simulation::startPose() const {
 }
 
 vehicle::EquilibriumReport Simulation::prepare() {
+  // Settling on the full model; `auto` chooses from the first tick on.
+  activate(0);
+  policyState_ = {};
   const mb::Model& m = vehicle().model;
   const mb::Body& ch = m.bodies[vehicle().layout.chassis];
   const double t0 = -spec().settleTime;
@@ -332,6 +404,7 @@ void Simulation::beginTick(const std::optional<DriverInput>& input) {
     input_.steer = std::clamp(steering_->at(time() + 0.5 * spec().tick).value, -1.0, 1.0);
     steerToward(input_.steer);
   }
+  if (policy_) chooseRung();
 }
 
 integ::StepReport Simulation::step() {
@@ -350,6 +423,12 @@ integ::StepReport Simulation::step() {
   airborne_ = grounded ? 0.0 : airborne_ + h;
   if (vehicle().planar) {
     if (const std::optional<std::string> off = offLevelGround()) {
+      if (policy_) {
+        // `auto`'s scan missed it: the full model from here on.
+        FidelityPolicy::forceFull(policyState_);
+        switchRung(0);
+        return r;
+      }
       r.status = integ::StepStatus::StateCheckFailed;
       r.message.set("%s", off->c_str());
       return r;
@@ -373,14 +452,15 @@ std::optional<std::string> Simulation::offLevelGround() const {
   for (int w = 0; w < 4; ++w) {
     const tyre::ContactPlane& g = forces_->wheels()[w].plane;
     const double rise = g.valid ? g.point.z() - road : NAN;
-    if (g.valid && std::abs(rise) <= kPlanarRoadHeight && g.normal.z() >= std::cos(kPlanarRoadSlope)) continue;
+    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= std::cos(FidelityPolicy::kRoadSlope))
+      continue;
     char buf[300];
     std::snprintf(buf, sizeof buf,
                   "the planar model left level ground at t = %.2f s: under wheel %s at x = %.1f m, y = %.1f m the "
                   "ground %s; [fidelity] suspension = planar drives on level ground only (use kinematic or linkage)",
                   time(), kCorner[w], g.point.x(), g.point.y(),
                   !g.valid ? "is missing"
-                           : (std::abs(rise) > kPlanarRoadHeight ? (rise > 0 ? "rises above the road plane" : "drops below the road plane")
+                           : (std::abs(rise) > FidelityPolicy::kRoadHeight ? (rise > 0 ? "rises above the road plane" : "drops below the road plane")
                                                                  : "slopes"));
     return std::string(buf);
   }
@@ -397,11 +477,15 @@ RunState Simulation::save() {
   s.input = input_;
   s.scriptedDriver = scriptedDriver_;
   s.airborne = airborne_;
+  s.rung = active_;
+  s.fidelity = policyState_;
   integrator_->markJacobianStale();
   return s;
 }
 
 void Simulation::restore(const RunState& s) {
+  activate(s.rung);
+  policyState_ = s.fidelity;
   integrator_->restore(s.integrator);
   forces_->setState(s.forces);
   rack_.segment = s.rack;

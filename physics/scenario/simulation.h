@@ -21,6 +21,7 @@
 #include "integrator/step_types.h"
 #include "multibody/multibody_dae.h"
 #include "scenario/driver_input.h"
+#include "scenario/fidelity_policy.h"
 #include "scenario/iso3888_course.h"
 #include "scenario/path_follower.h"
 #include "scenario/scenario_spec.h"
@@ -53,6 +54,9 @@ struct World {
   int stepsPerTick = 1;                             // spec.tick / spec.integrator.step
   // The derived model against the linkage, when the vehicle is not the linkage.
   std::optional<vehicle::KinematicCheck> kinematicCheck;
+  // `auto` with the planar model allowed: the rung it switches down to
+  // (`vehicle` is then the kinematic model it switches up to).
+  std::optional<vehicle::Vehicle> planar;
 };
 
 // Loads the vehicle and terrain files and builds the world; throws on bad
@@ -71,6 +75,8 @@ struct RunState {
   DriverInput input;                   // held for the current tick
   bool scriptedDriver = true;          // the scenario's driver (vs a person's held input)
   double airborne = 0;                 // s with no ground under any wheel
+  int rung = 0;                        // the model driving: 0 = world.vehicle, 1 = world.planar
+  FidelityPolicy::State fidelity;      // `auto`'s
   bool operator==(const RunState& o) const;
 };
 
@@ -117,6 +123,17 @@ class Simulation {
   void restore(const RunState& s);
 
   double time() const { return integrator_->current().t; }
+  // The rung driving now (0: world().vehicle; 1: world().planar under
+  // `auto`), how many there are, and a switch to another (the state mapped,
+  // the integrator restarted; what `auto` does at a tick).
+  int rung() const { return active_; }
+  int rungCount() const { return static_cast<int>(rungs_.size()); }
+  void switchRung(int rung);
+  const FidelityPolicy::State& fidelityState() const { return policyState_; }
+  long fidelitySwitches() const { return policyState_.switches; }
+  // The work of every rung's integrator.
+  integ::Counters counters() const;
+  integ::Timers timers() const;
   // The largest constraint residual of the current state at the position,
   // velocity and acceleration levels (m or rad, per s, per s^2): the drift a
   // long run must keep bounded.
@@ -128,7 +145,7 @@ class Simulation {
   vehicle::VehicleView view();                      // after sample()
   const World& world() const { return *world_; }
   const ScenarioSpec& spec() const { return world_->spec; }
-  const vehicle::Vehicle& vehicle() const { return world_->vehicle; }
+  const vehicle::Vehicle& vehicle() const { return *rungs_[active_].vehicle; }
   const integ::Integrator& integrator() const { return *integrator_; }
   const std::optional<Iso3888Course>& course() const { return world_->course; }
   // Steering input in [-1, 1] applied at time t (scripted, path follower or person).
@@ -148,15 +165,31 @@ class Simulation {
     double yaw = 0, vx = 0, yawRate = 0;
   };
   ChassisState chassisState() const;
-  void makeIntegrator();
+  std::unique_ptr<integ::Integrator> makeIntegrator(mb::MultibodyDae& dae) const;
   void applyDrive(const DriverInput& in, double vx, double h);
   void steerToward(double command);
 
+  // One model of the vehicle with its force laws and integrator.
+  struct Rung {
+    const vehicle::Vehicle* vehicle = nullptr;
+    std::unique_ptr<vehicle::VehicleForces> forces;
+    std::unique_ptr<mb::MultibodyDae> dae;
+    std::unique_ptr<integ::Integrator> integrator;
+  };
+  Rung makeRung(const vehicle::Vehicle& v);
+  void activate(int rung);
+  void chooseRung();  // `auto`, at a tick
+
   std::shared_ptr<const World> world_;
   std::unique_ptr<Signal> steering_, throttle_, brake_;
-  std::unique_ptr<vehicle::VehicleForces> forces_;
-  std::unique_ptr<mb::MultibodyDae> dae_;
-  std::unique_ptr<integ::Integrator> integrator_;
+  std::vector<Rung> rungs_;
+  int active_ = 0;
+  // The active rung's parts.
+  vehicle::VehicleForces* forces_ = nullptr;
+  mb::MultibodyDae* dae_ = nullptr;
+  integ::Integrator* integrator_ = nullptr;
+  std::optional<FidelityPolicy> policy_;
+  FidelityPolicy::State policyState_;
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
   RackSignal rack_;
@@ -169,12 +202,10 @@ class Simulation {
   // off a ramp lasts well under kMaxAirborne.
   double airborne_ = 0;
   static constexpr double kMaxAirborne = 3.0;  // s
-  // How far the ground under a planar model's wheel may leave its road plane:
-  // a rough road's or a curb's height, or a slope, needs a rung with heave,
-  // roll and pitch.
+  // Where the ground under a planar model's wheel leaves its road plane
+  // (FidelityPolicy::level's tolerances): a rough road's or a curb's height,
+  // or a slope, needs a rung with heave, roll and pitch.
   std::optional<std::string> offLevelGround() const;
-  static constexpr double kPlanarRoadHeight = 0.005;        // m
-  static constexpr double kPlanarRoadSlope = 0.5 * M_PI / 180;  // rad
 };
 
 // The vehicle width used for the ISO course: overall width over the tyres.

@@ -15,7 +15,7 @@ const char* TelemetryWriter::header() {
          "Fy_FL_N,Fy_FR_N,Fy_RL_N,Fy_RR_N,kappa_RL,kappa_RR,"
          "ax_mps2,speed_mps,throttle_in,brake_in,kappa_FL,kappa_FR,Fx_FL_N,Fx_FR_N,Fx_RL_N,Fx_RR_N,"
          "spin_FL_radps,spin_FR_radps,spin_RL_radps,spin_RR_radps,rack_force_N,newton_iterations,newton_correction,"
-         "segment";
+         "segment,fidelity";
 }
 
 TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v)
@@ -149,7 +149,8 @@ void TelemetryWriter::formatRow(const Row& r) {
   for (double v : values) put(std::to_chars(p, end, v, std::chars_format::general, 10), ',');
   put(std::to_chars(p, end, in.newtonIterations), ',');
   put(std::to_chars(p, end, in.newtonCorrection, std::chars_format::general, 4), ',');
-  put(std::to_chars(p, end, in.segment), '\n');
+  put(std::to_chars(p, end, in.segment), ',');
+  put(std::to_chars(p, end, in.fidelity), '\n');
   file_.append(row, static_cast<std::size_t>(p - row));
 }
 

@@ -25,6 +25,7 @@ struct TelemetryInputs {
   int newtonIterations = 0;
   double newtonCorrection = 0;  // weighted norm of the last correction (1 = tolerance)
   int segment = 0;              // a drive's segment: +1 at each reset, rewind or divergence reset
+  int fidelity = 0;             // the model driving: vehicle::Fidelity (0 linkage, 1 kinematic, 2 planar)
 };
 
 // Rows are formatted and written by a thread of the writer's own, so that

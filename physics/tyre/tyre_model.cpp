@@ -1,5 +1,7 @@
 #include "tyre/tyre_model.h"
 
+#include <algorithm>
+
 namespace bdfcar::tyre {
 
 double unloadedRadius(const TyreParams& p) {
@@ -8,6 +10,14 @@ double unloadedRadius(const TyreParams& p) {
 
 double verticalStiffness(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.verticalStiffness; }, p);
+}
+
+double verticalDamping(const TyreParams& p) {
+  return std::visit([](const auto& m) { return m.verticalDamping; }, p);
+}
+
+double peakFriction(const TyreParams& p, double mu) {
+  return std::visit([&](const auto& m) { return m.uMax * std::clamp(mu, 0.1, 1.0) / m.referenceFriction; }, p);
 }
 
 double width(const TyreParams& p) {

@@ -16,6 +16,9 @@ using TyreParams = std::variant<FialaParams>;
 double unloadedRadius(const TyreParams& p);
 double width(const TyreParams& p);
 double verticalStiffness(const TyreParams& p);  // N/m
+double verticalDamping(const TyreParams& p);    // N s/m
+// The largest force per unit load the tyre gives on ground of friction mu.
+double peakFriction(const TyreParams& p, double mu);
 
 // One tyre: its model with its data. `previous` are the transient slips at
 // the last accepted step, h the time since then (the evaluation integrates

@@ -11,6 +11,7 @@
 #include "multibody/kinematics.h"
 #include "multibody/model_error.h"
 #include "multibody/multibody_dae.h"
+#include "vehicle/derivation_cache.h"
 #include "vehicle/equilibrium.h"
 #include "vehicle/mass_moments.h"
 #include "vehicle/motion_ratio.h"
@@ -415,6 +416,60 @@ KinematicCheck checkAgainstLinkage(const Vehicle& link, LinkageSweep& ls, const 
   return c;
 }
 
+// The cache entry (derivation_cache.h): the sweep and the check's figures.
+constexpr std::uint32_t kCacheFormat = 1;
+
+std::uint64_t cacheKey(const Vehicle& linkage, const KinematicGrid& g) {
+  ByteBuffer k;
+  k.put(derivationFingerprint(linkage));
+  k.put(kCacheFormat);
+  k.put(g.travelNodes);
+  k.put(g.rackNodes);
+  k.put(g.travel);
+  k.put(g.rackMargin);
+  return hashBytes(k.bytes);
+}
+
+ByteBuffer storeSweep(const Sweep& sw, const KinematicCheck& c) {
+  ByteBuffer b;
+  for (const mb::GridAxis& a : {sw.travel, sw.rack}) {
+    b.put(a.start);
+    b.put(a.step);
+    b.put(a.nodes);
+  }
+  b.put(sw.configurations);
+  for (const CornerTable& t : sw.corners) {
+    b.put(static_cast<std::uint8_t>(t.steered));
+    b.put(static_cast<std::uint64_t>(t.springs.size()));
+    for (int k : t.springs) b.put(k);
+    b.put(t.rest);
+    b.put(static_cast<std::uint64_t>(t.samples.size()));
+    for (const std::vector<double>& comp : t.samples) b.putDoubles(comp);
+  }
+  b.put(c);
+  return b;
+}
+
+bool loadSweep(ByteBuffer b, Sweep& sw, KinematicCheck& c) {
+  bool ok = true;
+  for (mb::GridAxis* a : {&sw.travel, &sw.rack}) ok = ok && b.get(a->start) && b.get(a->step) && b.get(a->nodes);
+  ok = ok && b.get(sw.configurations);
+  for (CornerTable& t : sw.corners) {
+    std::uint8_t steered = 0;
+    std::uint64_t n = 0;
+    ok = ok && b.get(steered) && b.get(n) && n < 64;
+    if (!ok) return false;
+    t.steered = steered != 0;
+    t.springs.resize(n);
+    for (int& k : t.springs) ok = ok && b.get(k);
+    ok = ok && b.get(t.rest) && b.get(n) && n <= static_cast<std::uint64_t>(mb::SplineGrid::kMaxComponents);
+    if (!ok) return false;
+    t.samples.resize(n);
+    for (std::vector<double>& comp : t.samples) ok = ok && b.getDoubles(comp);
+  }
+  return ok && b.get(c) && b.atEnd();
+}
+
 }  // namespace
 
 KinematicDerivation deriveKinematic(const Vehicle& linkage, const KinematicGrid& grid) {
@@ -425,10 +480,14 @@ KinematicDerivation deriveKinematic(const Vehicle& linkage, const KinematicGrid&
       throw mb::ModelError("kinematic model: spring-damper '" + r.element + "' does not move with one wheel");
   LinkageSweep ls(linkage);
   KinematicDerivation out;
-  // The widest travel the linkage reaches, from the grid's down to a quarter of it.
+  const std::uint64_t key = cacheKey(linkage, grid);
   Sweep sw;
+  KinematicCheck cachedCheck;
+  if (std::optional<ByteBuffer> entry = readDerivationCache("kinematic", key))
+    out.fromCache = loadSweep(std::move(*entry), sw, cachedCheck);
+  // The widest travel the linkage reaches, from the grid's down to a quarter of it.
   double travel = grid.travel;
-  for (int attempt = 0;; ++attempt) {
+  for (int attempt = 0; !out.fromCache; ++attempt) {
     try {
       sw = sweepLinkage(linkage, ls, grid, travel, ratios);
       break;
@@ -463,7 +522,13 @@ KinematicDerivation deriveKinematic(const Vehicle& linkage, const KinematicGrid&
                            ": the linkage's travel inertia is below the wheel's own");
   }
   out.vehicle = buildKinematic(linkage, sw, ls.design(), out.carrierMass);
-  out.check = checkAgainstLinkage(linkage, ls, out.vehicle, sw);
+  if (out.fromCache) {
+    out.check = cachedCheck;
+  } else {
+    out.check = checkAgainstLinkage(linkage, ls, out.vehicle, sw);
+    writeDerivationCache("kinematic", key, storeSweep(sw, out.check));
+  }
+  out.cacheFile = derivationCachePath("kinematic", key);
   return out;
 }
 
@@ -474,8 +539,9 @@ std::string describeKinematic(const KinematicDerivation& d) {
   std::snprintf(buf, sizeof buf, "kinematic model: %d coordinates, %d constraint equations (rack drivers), %d bodies\n",
                 v.model.nv, v.model.nc, static_cast<int>(v.model.bodies.size()));
   o << buf;
-  std::snprintf(buf, sizeof buf, "  tables: wheel travel +-%.3f m, rack +-%.4f m, from %d linkage configurations\n",
-                d.check.travelRange, d.check.rackRange, d.sweepConfigurations);
+  std::snprintf(buf, sizeof buf, "  tables: wheel travel +-%.3f m, rack +-%.4f m, from %d linkage configurations%s\n",
+                d.check.travelRange, d.check.rackRange, d.sweepConfigurations,
+                d.fromCache ? " (read from the cache)" : "");
   o << buf;
   for (int w = 0; w < 4; ++w) {
     std::snprintf(buf, sizeof buf, "  %s: %s, carrier %.2f kg (linkage travel inertia %.2f kg)\n", kCorner[w],

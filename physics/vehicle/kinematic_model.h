@@ -43,6 +43,8 @@ struct KinematicDerivation {
   std::array<double, 4> linkageTravelMass{};  // kg, the linkage's generalised mass along each travel
   std::array<bool, 4> steered{};          // corner tabulated over the rack too
   int sweepConfigurations = 0;            // linkage assemblies in the sweep
+  bool fromCache = false;                 // the sweep and its check read from the cache (derivation_cache.h)
+  std::string cacheFile;                  // the cache entry (empty: the cache is off)
 };
 
 // Tabulation density (nodes per coordinate); the defaults keep the tables

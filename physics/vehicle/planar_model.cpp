@@ -115,6 +115,8 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
       throw mb::ModelError(std::string("planar model: wheel ") + kCorner[w] + " has no spring rate at its static travel");
     const double series = kt / (out.wheelRate[w] + kt);
     loads.rate[w] = out.wheelRate[w] * series;
+    loads.suspensionShare[w] = series;
+    loads.staticTravel[w] = s;
     loads.damping[w] = damping * series * series;
     loads.staticLoad[w] = rest.report.wheelLoads[w];
     // Roll centre (instant-centre construction): the line through the contact

@@ -50,6 +50,8 @@ struct PlanarLoads {
   std::array<double, 4> staticLoad{};  // N
   std::array<double, 4> rate{};        // N/m, wheel rate in series with the tyre's vertical rate
   std::array<double, 4> damping{};     // N s/m, at the wheel
+  std::array<double, 4> staticTravel{};      // m, the kinematic model's suspension travel at rest
+  std::array<double, 4> suspensionShare{};   // of a corner's deflection taken by the suspension (the rest: the tyre)
   std::array<Vec3, 4> sprungPoint{};   // corner point on the sprung body (its frame), above the contact point
   std::array<Vec3, 4> basePoint{};     // the same point on the base (its frame)
   std::array<double, 2> rollCentreHeight{};  // m above the ground

@@ -28,13 +28,13 @@ void stepBenchmark(benchmark::State& st, const std::string& vehicleFile, const s
   scenario::Simulation sim(spec);
   sim.prepare();
   while (sim.time() < 1.9) sim.step();  // up to the lane change
-  const integ::Counters c0 = sim.integrator().counters();
-  const integ::Timers t0 = sim.integrator().timers();
+  const integ::Counters c0 = sim.counters();
+  const integ::Timers t0 = sim.timers();
   for (auto _ : st) {
     if (!sim.step().ok()) st.SkipWithError("diverged");
   }
-  const integ::Counters& c = sim.integrator().counters();
-  const integ::Timers& t = sim.integrator().timers();
+  const integ::Counters& c = sim.counters();
+  const integ::Timers& t = sim.timers();
   const double n = static_cast<double>(c.steps - c0.steps);
   st.counters["jacobian_us"] = 1e6 * (t.jacobian - t0.jacobian) / n;
   st.counters["residual_us"] = 1e6 * (t.residual - t0.residual) / n;

@@ -1,0 +1,58 @@
+#include "scenario/fidelity_policy.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bdfcar::scenario {
+
+FidelityPolicy::FidelityPolicy(const terrain::Terrain& terrain, double roadZ,
+                               const std::array<Eigen::Vector2d, 4>& wheelOffsets,
+                               const std::array<tyre::TyreParams, 4>& tyres)
+    : terrain_(terrain), roadZ_(roadZ), offsets_(wheelOffsets), tyres_(tyres) {}
+
+bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
+  const terrain::Hit h =
+      terrain_.castRay(Eigen::Vector3d(xy.x(), xy.y(), roadZ_ + 1.0), -Eigen::Vector3d::UnitZ(), 2.0);
+  return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= std::cos(kRoadSlope);
+}
+
+void FidelityPolicy::forceFull(State& s) {
+  s.fullUntil = std::max(s.fullUntil, s.odometer + kMargin);
+  s.calm = 0;
+  ++s.missed;
+}
+
+FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d& com, double yaw, double speed,
+                                                const std::array<vehicle::WheelContact, 4>& wheels,
+                                                double tick) const {
+  s.odometer += std::abs(speed) * tick;
+  // Scan what has come into range: from where the last scan ended (or the
+  // wheels, at the start) to the look-ahead, along the heading.
+  const double reach = s.odometer + std::max(kMinLookAhead, std::abs(speed) * kLookAhead);
+  const Eigen::Vector2d heading(std::cos(yaw), std::sin(yaw)), left(-heading.y(), heading.x());
+  for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
+    for (const Eigen::Vector2d& o : offsets_) {
+      const Eigen::Vector2d p = com + o.x() * heading + o.y() * left + (d - s.odometer) * heading;
+      if (!level(p)) s.fullUntil = std::max(s.fullUntil, d + kMargin);
+    }
+    s.scanned = d + kScanStep;
+  }
+  bool saturated = false;  // or a wheel in the air
+  for (int w = 0; w < 4; ++w) {
+    const tyre::TyreOutput& o = wheels[w].out;
+    if (!o.inContact) {  // a wheel off the ground: heave, roll and pitch matter
+      saturated = true;
+      continue;
+    }
+    const double limit = tyre::peakFriction(tyres_[w], wheels[w].plane.friction) * o.Fz;
+    saturated = saturated || std::hypot(o.Fx, o.Fy) > kSaturation * limit;
+  }
+  if (saturated || s.odometer < s.fullUntil) {
+    s.calm = 0;
+    return Decision::Full;
+  }
+  s.calm += tick;
+  return s.calm >= kCalm ? Decision::Planar : Decision::Hold;
+}
+
+}  // namespace bdfcar::scenario

@@ -1,0 +1,69 @@
+// When `[fidelity] suspension = "auto"` may drive on the planar model and
+// when it needs the full one (the kinematic model): decided once per driver
+// tick from what the terrain and the tyres say.
+//
+//  - The terrain ahead of each wheel is scanned along the heading, every
+//    kScanStep of road, as far as kLookAhead seconds ahead (at least
+//    kMinLookAhead): ground off the road plane (kRoadHeight) or tilted
+//    (kRoadSlope), or no ground, is a stretch that needs heave, roll and
+//    pitch of the base, up to kMargin past it. The road is scanned once: a
+//    tick scans only what has come into range since the last one.
+//  - A tyre using more than kSaturation of its friction needs the full model.
+//  - Up at once; down only after kCalm seconds with neither (no chatter).
+// The state is a plain value (part of the run state).
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "terrain/terrain.h"
+#include "tyre/tyre_model.h"
+#include "vehicle/vehicle_forces.h"
+
+namespace bdfcar::scenario {
+
+class FidelityPolicy {
+ public:
+  struct State {
+    double odometer = 0;    // m travelled (|forward speed| x tick)
+    double scanned = 0;     // m of odometer up to which the road ahead has been scanned
+    double fullUntil = -1;  // m of odometer until which the full model is needed
+    double calm = 0;        // s with neither rough road ahead nor a tyre near its limit
+    long switches = 0;      // rung switches so far
+    long missed = 0;        // of them, up from the planar model standing on ground it cannot drive on
+    bool operator==(const State&) const = default;
+  };
+  enum class Decision { Full, Planar, Hold };
+
+  // wheelOffsets: each tyre's contact point relative to the centre of mass,
+  // in the heading frame (x forward, y left); roadZ: the planar model's road.
+  FidelityPolicy(const terrain::Terrain& terrain, double roadZ, const std::array<Eigen::Vector2d, 4>& wheelOffsets,
+                 const std::array<tyre::TyreParams, 4>& tyres);
+
+  // com: centre of mass (x, y); yaw; forward speed; the tyres' latest outputs.
+  Decision decide(State& s, const Eigen::Vector2d& com, double yaw, double speed,
+                  const std::array<vehicle::WheelContact, 4>& wheels, double tick) const;
+  // The planar model met ground it cannot drive on (the scan missed it):
+  // the full model from here for kMargin.
+  static void forceFull(State& s);
+  // Whether the ground at a point is the road plane.
+  bool level(const Eigen::Vector2d& xy) const;
+
+  static constexpr double kLookAhead = 0.6;     // s
+  static constexpr double kMinLookAhead = 3.0;  // m
+  static constexpr double kScanStep = 0.1;      // m
+  static constexpr double kMargin = 1.0;        // m past the last rough point
+  static constexpr double kSaturation = 0.8;    // of the tyre's friction
+  static constexpr double kCalm = 1.0;          // s
+  static constexpr double kRoadHeight = 0.005;  // m off the road plane
+  static constexpr double kRoadSlope = 0.5 * 3.14159265358979323846 / 180;  // rad
+
+ private:
+  const terrain::Terrain& terrain_;
+  double roadZ_;
+  std::array<Eigen::Vector2d, 4> offsets_;
+  std::array<tyre::TyreParams, 4> tyres_;
+};
+
+}  // namespace bdfcar::scenario

@@ -1,0 +1,150 @@
+// `[fidelity] suspension = "auto"` (scenario/fidelity_policy.h): the state
+// mapped between the kinematic and planar models (vehicle/rung_mapping.h),
+// switches in mid-run against a run on the kinematic model alone, the switch
+// up ahead of a curb, and a run restored from a state on the planar model.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scenario/check.h"
+#include "scenario/run.h"
+#include "vehicle/rung_mapping.h"
+
+namespace bdfcar {
+namespace {
+
+std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
+
+scenario::ScenarioSpec autoSpec(const char* file) {
+  scenario::ScenarioSpec s = scenario::loadScenarioFile(asset(file));
+  s.fidelity.automatic = true;
+  s.fidelity.errorBudget = scenario::kPlanarErrorBound;
+  return s;
+}
+
+// A state in mid-manoeuvre (1.5 s into the J-turn, rolled and yawing) on the
+// kinematic model, mapped to the planar model and back: what both models
+// have (attitude, heading, rates, rack, spins) survives both ways; a planar
+// state survives the round trip exactly.
+TEST(RungMapping, KeepsWhatBothModelsHave) {
+  scenario::Simulation sim(autoSpec("scenarios/jturn.toml"));
+  ASSERT_EQ(sim.rungCount(), 2);
+  scenario::RunOptions o;
+  o.sample = false;
+  scenario::Run run(sim, o);
+  while (sim.time() < 1.5 && run.tick(std::nullopt)) {
+  }
+  if (sim.rung() == 1) sim.switchRung(0);
+  const vehicle::Vehicle& kin = sim.world().vehicle;
+  const vehicle::Vehicle& planar = *sim.world().planar;
+  const Eigen::VectorXd qk = sim.integrator().current().q, vk = sim.integrator().current().v;
+  Eigen::VectorXd qp, vp, qk2, vk2, qp2, vp2;
+  vehicle::kinematicToPlanar(kin, planar, qk, vk, qp, vp);
+  vehicle::planarToKinematic(planar, kin, qp, vp, qk2, vk2);
+  const mb::Body& ch = kin.model.bodies[kin.layout.chassis];
+  // Attitude (quaternion) and the chassis's angular velocity: exact.
+  EXPECT_LT((qk.segment<4>(ch.qIndex + 3) - qk2.segment<4>(ch.qIndex + 3)).norm(), 1e-12);
+  EXPECT_LT((vk.segment<3>(ch.vIndex + 3) - vk2.segment<3>(ch.vIndex + 3)).norm(), 1e-12);
+  // Horizontal position and velocity: exact; height and vertical velocity:
+  // the planar model has no heave (a few millimetres in this manoeuvre).
+  EXPECT_LT((qk.segment<2>(ch.qIndex) - qk2.segment<2>(ch.qIndex)).norm(), 1e-12);
+  EXPECT_LT(std::abs(qk(ch.qIndex + 2) - qk2(ch.qIndex + 2)), 5e-3);
+  for (int w = 0; w < 4; ++w) {
+    const int spin = kin.model.bodies[kin.layout.wheels[w].spindle].vIndex;
+    EXPECT_EQ(vk(spin), vk2(spin));
+    // Travel: the suspension's share of the corner's deflection (within 3 mm here).
+    const mb::Body& c = kin.model.bodies[kin.layout.wheels[w].carrier];
+    EXPECT_NEAR(qk2(c.qIndex), qk(c.qIndex), 3e-3) << w;
+  }
+  EXPECT_EQ(qk(kin.layout.rackQ), qk2(kin.layout.rackQ));
+  vehicle::kinematicToPlanar(kin, planar, qk2, vk2, qp2, vp2);
+  EXPECT_LT((qp - qp2).lpNorm<Eigen::Infinity>(), 1e-12);
+  EXPECT_LT((vp - vp2).lpNorm<Eigen::Infinity>(), 1e-9);
+}
+
+// The lane change under `auto` (down to the planar model on the straight,
+// up at the tyres' limit, down again) against the kinematic model alone:
+// within the planar model's bound overall, and no jump at a switch (the
+// change of lateral acceleration across a switch within 0.2 m/s^2 of the
+// kinematic run's over the same interval: the target).
+TEST(FidelityAuto, SwitchesInMidRunWithoutAJump) {
+  scenario::ScenarioSpec kinSpec = scenario::loadScenarioFile(asset("scenarios/lane_change.toml"));
+  kinSpec.fidelity.suspension = vehicle::Fidelity::Kinematic;
+  scenario::Simulation a(kinSpec), b(autoSpec("scenarios/lane_change.toml"));
+  std::vector<int> rung;  // the model that computed each sample of b
+  scenario::RunOptions keep, keepRung;
+  keepRung.onSample = [&](const vehicle::VehicleSample&) { rung.push_back(b.rung()); };
+  const scenario::RunResult ra = scenario::runScenario(a, keep), rb = scenario::runScenario(b, keepRung);
+  ASSERT_TRUE(ra.ok) << ra.failure;
+  ASSERT_TRUE(rb.ok) << rb.failure;
+  EXPECT_GE(rb.fidelitySwitches, 2);
+  EXPECT_GT(rb.stepsPerModel[2], 0);
+  EXPECT_EQ(b.fidelityState().missed, 0);
+  ASSERT_EQ(ra.samples.size(), rb.samples.size());
+  ASSERT_EQ(rung.size(), rb.samples.size());
+  double sumYaw = 0, sumAy = 0, peakYaw = 0, peakAy = 0;
+  for (size_t i = 0; i < ra.samples.size(); ++i) {
+    sumYaw += std::pow(ra.samples[i].yawRate - rb.samples[i].yawRate, 2);
+    sumAy += std::pow(ra.samples[i].ay - rb.samples[i].ay, 2);
+    peakYaw = std::max(peakYaw, std::abs(ra.samples[i].yawRate));
+    peakAy = std::max(peakAy, std::abs(ra.samples[i].ay));
+  }
+  const double n = static_cast<double>(ra.samples.size());
+  EXPECT_LT(std::sqrt(sumYaw / n) / peakYaw, scenario::kPlanarErrorBound);
+  EXPECT_LT(std::sqrt(sumAy / n) / peakAy, scenario::kPlanarErrorBound);
+  int switches = 0;
+  for (size_t i = 1; i < rung.size(); ++i) {
+    if (rung[i] == rung[i - 1]) continue;
+    ++switches;
+    const double stepAuto = rb.samples[i].ay - rb.samples[i - 1].ay;
+    const double stepKinematic = ra.samples[i].ay - ra.samples[i - 1].ay;
+    EXPECT_LT(std::abs(stepAuto - stepKinematic), 0.2) << "switch at t = " << rb.samples[i].t;
+  }
+  EXPECT_EQ(switches, rb.fidelitySwitches);
+}
+
+// The curb strike under `auto`: down to the planar model on the approach, up
+// to the kinematic model before the curb (the scan ahead, not the planar
+// model's own stop on ground it cannot drive on), and the scenario's check
+// passes.
+TEST(FidelityAuto, SwitchesUpAheadOfACurb) {
+  const scenario::CheckResult c = scenario::checkScenario(autoSpec("scenarios/hard/curb_strike.toml"));
+  EXPECT_TRUE(c.passed) << (c.failures.empty() ? "" : c.failures.front());
+  scenario::Simulation sim(autoSpec("scenarios/hard/curb_strike.toml"));
+  const scenario::RunResult r = scenario::runScenario(sim, {});
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_GT(r.stepsPerModel[2], 0);
+  EXPECT_GT(r.stepsPerModel[1], 0);
+  EXPECT_EQ(sim.fidelityState().missed, 0);
+}
+
+// A state saved on the planar model restores bit for bit: the rung and the
+// policy's state are part of the run state.
+TEST(FidelityAuto, RestoresAStateSavedOnThePlanarModel) {
+  scenario::Simulation sim(autoSpec("scenarios/lane_change.toml"));
+  scenario::RunOptions o;
+  o.keepSamples = false;
+  scenario::Run run(sim, o);
+  while (sim.rung() != 1 && run.tick(std::nullopt)) {
+  }
+  ASSERT_EQ(sim.rung(), 1);
+  const scenario::RunState saved = sim.save();
+  auto drive = [&] {
+    std::vector<double> out;
+    for (int i = 0; i < 200; ++i) {
+      sim.beginTick(std::nullopt);
+      for (int k = 0; k < sim.stepsPerTick(); ++k) EXPECT_TRUE(sim.step().ok());
+      const vehicle::VehicleSample s = sim.sample();
+      out.push_back(s.yawRate);
+      out.push_back(s.ay);
+      out.push_back(sim.rung());
+    }
+    return out;
+  };
+  const std::vector<double> first = drive();
+  sim.restore(saved);
+  EXPECT_EQ(first, drive());
+}
+
+}  // namespace
+}  // namespace bdfcar
