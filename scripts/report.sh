@@ -70,9 +70,10 @@ bench_table() {
     echo
     echo "| vehicle | instructions per 10 ms step |"
     echo "|---|---|"
-    # The vehicle file, then the kinematic model derived from it (section 5b):
-    # what a scene that does not need the linkage saves per step.
-    for run in "paper linkage" "sedan linkage" "paper kinematic" "sedan kinematic"; do
+    # The vehicle file, then the models derived from it (section 5b): what a
+    # scene that does not need the linkage saves per step; `auto` includes its
+    # scan of the road ahead and its switches.
+    for run in "paper linkage" "sedan linkage" "paper kinematic" "sedan kinematic" "sedan planar" "sedan auto"; do
       set -- $run
       v=$1 f=$2
       ir() {
@@ -81,7 +82,7 @@ bench_table() {
           awk '/Collected/ { print $4 }'
       }
       label="$v.toml"
-      [ "$f" = kinematic ] && label="$v.toml, \`--fidelity kinematic\`"
+      [ "$f" != linkage ] && label="$v.toml, \`--fidelity $f\`"
       echo "| $label | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
     done
     # Telemetry at every step (a CSV row of 52 columns per 10 ms step): the
