@@ -76,6 +76,17 @@ EvalStatus BdfIntegrator::initialize(double t0, const Vec& q0, const Vec& v0, Me
   return EvalStatus::Ok;
 }
 
+EvalStatus BdfIntegrator::restart(double t0, const Vec& q0, const Vec& v0, Message& msg) {
+  const bool blocks = haveBlocks_;
+  const long since = stepsSinceJacobian_;
+  const EvalStatus st = initialize(t0, q0, v0, msg);
+  // The blocks stay; the iteration matrix is factorized again for the
+  // restart's first-order step (initializeConsistent cleared its h').
+  haveBlocks_ = blocks;
+  stepsSinceJacobian_ = since;
+  return st;
+}
+
 void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
   head_ = 0;
   count_ = 1;

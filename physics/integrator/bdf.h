@@ -63,6 +63,7 @@ class BdfIntegrator final : public Integrator {
   BdfIntegrator(Dae& dae, const BdfOptions& options);
 
   EvalStatus initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
+  EvalStatus restart(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
   // Starts from a point whose a and lambda are already consistent.
   void initializeConsistent(const SolutionPoint& p);
   StepReport step(double h) override;

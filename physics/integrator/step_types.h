@@ -90,6 +90,12 @@ class Integrator {
   // Starts from q0, v0 satisfying the position and velocity constraints; the
   // consistent acceleration and multipliers are solved for.
   virtual EvalStatus initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) = 0;
+  // As initialize (the history starts again), but a Jacobian the integrator
+  // holds is kept: the same system restarted at another point (a vehicle
+  // model switched back to), where a fresh one would cost its residuals.
+  virtual EvalStatus restart(double t0, const Vec& q0, const Vec& v0, Message& msg) {
+    return initialize(t0, q0, v0, msg);
+  }
   virtual StepReport step(double h) = 0;
   virtual const SolutionPoint& current() const = 0;
   virtual const Counters& counters() const = 0;

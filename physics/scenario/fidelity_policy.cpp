@@ -30,6 +30,7 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
   // wheels, at the start) to the look-ahead, along the heading.
   const double reach = s.odometer + std::max(kMinLookAhead, std::abs(speed) * kLookAhead);
   const Eigen::Vector2d heading(std::cos(yaw), std::sin(yaw)), left(-heading.y(), heading.x());
+  if (terrain_.levelEverywhere()) s.scanned = reach;  // a level plane: nothing to find
   for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
     for (const Eigen::Vector2d& o : offsets_) {
       const Eigen::Vector2d p = com + o.x() * heading + o.y() * left + (d - s.odometer) * heading;

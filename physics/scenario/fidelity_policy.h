@@ -7,7 +7,8 @@
 //    kMinLookAhead): ground off the road plane (kRoadHeight) or tilted
 //    (kRoadSlope), or no ground, is a stretch that needs heave, roll and
 //    pitch of the base, up to kMargin past it. The road is scanned once: a
-//    tick scans only what has come into range since the last one.
+//    tick scans only what has come into range since the last one; a terrain
+//    that is one level plane is not scanned at all.
 //  - A tyre using more than kSaturation of its friction needs the full model.
 //  - Up at once; down only after kCalm seconds with neither (no chatter).
 // The state is a plain value (part of the run state).

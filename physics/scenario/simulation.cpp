@@ -207,7 +207,7 @@ void Simulation::switchRung(int rung) {
   activate(rung);
   forces_->setState(forces);
   integ::Message msg;
-  if (integrator_->initialize(from.t, q, v, msg) != integ::EvalStatus::Ok)
+  if (integrator_->restart(from.t, q, v, msg) != integ::EvalStatus::Ok)
     throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
                              " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
   ++policyState_.switches;
@@ -479,11 +479,14 @@ RunState Simulation::save() {
   s.airborne = airborne_;
   s.rung = active_;
   s.fidelity = policyState_;
-  integrator_->markJacobianStale();
+  // Every model's Jacobian (a model switched back to keeps its own): a run
+  // restored to this state finds none either.
+  for (Rung& r : rungs_) r.integrator->markJacobianStale();
   return s;
 }
 
 void Simulation::restore(const RunState& s) {
+  for (Rung& r : rungs_) r.integrator->markJacobianStale();
   activate(s.rung);
   policyState_ = s.fidelity;
   integrator_->restore(s.integrator);

@@ -22,6 +22,9 @@ class Terrain {
   // First surface hit along from + s * direction, 0 <= s <= maxDistance
   // (direction need not be unit; distance is in metres along it).
   virtual Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const = 0;
+  // True when the whole terrain is one level plane (nothing to look for
+  // ahead of a car on it: scenario/fidelity_policy.h).
+  virtual bool levelEverywhere() const { return false; }
 };
 
 // An infinite plane through `point` with unit normal `normal`.
@@ -30,6 +33,7 @@ class PlaneTerrain final : public Terrain {
   PlaneTerrain(const Eigen::Vector3d& point = Eigen::Vector3d::Zero(),
                const Eigen::Vector3d& normal = Eigen::Vector3d::UnitZ(), double friction = 0.8);
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
+  bool levelEverywhere() const override { return normal_.z() == 1.0; }
 
  private:
   Eigen::Vector3d point_, normal_;

@@ -17,6 +17,7 @@ void VehicleForces::reset(double t) {
   for (WheelContact& c : wheels_) {
     c.slip = tyre::SlipState{};
     c.brakeDeflection = 0;
+    c.acceptedForce.setZero();
   }
   lastAccepted_ = t;
   planesReady_ = false;
@@ -99,7 +100,7 @@ double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) 
   return -c.brakeCapacity * std::tanh(t / c.brakeCapacity);
 }
 
-void VehicleForces::planarLoads(mb::Data& d, double h) {
+void VehicleForces::planarLoads(mb::Data& d) {
   const PlanarLoads& P = *vehicle_.planar;
   const int base = vehicle_.layout.base, sprung = vehicle_.layout.chassis;
   const Eigen::Vector3d up = d.R[base].col(2);
@@ -115,16 +116,15 @@ void VehicleForces::planarLoads(mb::Data& d, double h) {
     wheels_[w].modelLoad = P.staticLoad[w] + f;
   }
   // The roll centres: each axle's lateral tyre force at its roll-centre
-  // height, the longitudinal ones at the axis height, from the tyres at the
-  // spring loads (an axle's lateral force hardly depends on how its load is
-  // split between its wheels).
+  // height, the longitudinal ones at the axis height. The tyre forces are
+  // those of the last accepted step, advanced once per step as the brake
+  // spring is: a step's lag on a fifth of the load transfer, where a second
+  // tyre evaluation per residual would cost a fifth of the step (RESULTS 6b).
   const Eigen::Vector3d fwd = d.R[base].col(0), left = d.R[base].col(1);
   double lateral[2] = {0, 0}, longitudinal = 0;
   for (int w = 0; w < 4; ++w) {
-    const WheelContact& c = wheels_[w];
-    const tyre::TyreOutput o = tyres_[w].evaluate(wheelKinematics(d, w), c.plane, c.slip, h, c.modelLoad);
-    lateral[w / 2] += left.dot(o.force);
-    longitudinal += fwd.dot(o.force);
+    lateral[w / 2] += left.dot(wheels_[w].acceptedForce);
+    longitudinal += fwd.dot(wheels_[w].acceptedForce);
   }
   for (int a = 0; a < 2; ++a) {
     const double shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
@@ -137,7 +137,7 @@ void VehicleForces::planarLoads(mb::Data& d, double h) {
 
 void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   const double h = std::max(0.0, t - lastAccepted_);
-  if (vehicle_.planar) planarLoads(d, h);
+  if (vehicle_.planar) planarLoads(d);
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];
@@ -178,6 +178,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
       c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
     else
       c.slip.active = false;
+    c.acceptedForce = c.out.inContact ? c.out.force : Eigen::Vector3d::Zero();
     // Ground under the wheel at the end of the next step.
     c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
     if (c.brakeCapacity > 0) {

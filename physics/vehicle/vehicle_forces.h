@@ -44,6 +44,7 @@ struct WheelContact {
   tyre::TyreOutput out;          // of the latest evaluation
   double spinRate = 0;           // absolute, rad/s (latest evaluation)
   double modelLoad = 0;          // N, a planar model's normal load (latest evaluation)
+  Eigen::Vector3d acceptedForce = Eigen::Vector3d::Zero();  // N, world: the tyre force at the last accepted step
   bool operator==(const WheelContact&) const = default;
 };
 
@@ -90,7 +91,7 @@ class VehicleForces final : public mb::ForceProvider {
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
   // go on the sprung body and the base, the loads into wheels_[w].modelLoad.
-  void planarLoads(mb::Data& data, double h);
+  void planarLoads(mb::Data& data);
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(wheels_[w].modelLoad) : std::nullopt;
   }
