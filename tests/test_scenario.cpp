@@ -296,7 +296,7 @@ TEST(Fidelity, KinematicModelFollowsTheLinkageOnTheReferenceManoeuvres) {
 // The planar rung (physics/vehicle/planar_model.h): no heave, no suspension
 // travel, load transfer from derived roll stiffness and roll centres. The
 // bound is the target for it, 10 % of peak; measured 2-5 % on yaw
-// rate and lateral acceleration, 3-6 % on the load transfer (RESULTS 5b).
+// rate and lateral acceleration, 2-5 % on the load transfer (RESULTS 5b).
 TEST(Fidelity, PlanarModelFollowsTheLinkageOnTheReferenceManoeuvres) {
   for (const char* file : {"scenarios/jturn.toml", "scenarios/lane_change.toml"}) {
     const RungDistance d = distanceFromTheLinkage(file, vehicle::Fidelity::Planar);
