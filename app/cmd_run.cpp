@@ -10,25 +10,41 @@
 #include "commands.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
+#include "scenario/standard_tests.h"
 #include "scenario_overrides.h"
 
 namespace bdfcar::app {
 
 namespace {
 
-int runRun(const std::string& path, const std::string& out, const ScenarioOverrides& ov) {
+// A standard test's metrics from the run's samples.
+void printStandardTest(const scenario::ScenarioSpec& spec, const scenario::Simulation& sim,
+                       const scenario::RunResult& r, const std::string& metricsPath) {
+  const scenario::StandardTestReport report = scenario::standardTestReport(
+      spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
+  std::printf("%s", report.text.c_str());
+  if (!metricsPath.empty()) {
+    scenario::RowFile f(metricsPath);
+    f.append(report.json);
+    f.close();
+  }
+}
+
+int runRun(const std::string& path, const std::string& out, const std::string& metrics, const ScenarioOverrides& ov) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(path);
   applyOverrides(ov, spec);
   scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
+  scenario::refuseOverwritingInputs(metrics, {path, spec.vehicleFile, spec.terrainFile, out});
   scenario::Simulation sim(spec);
   InterruptGuard interrupts;
   scenario::RunOptions opt;
   opt.telemetryPath = out;
-  opt.keepSamples = false;
+  // A standard test's metrics need the whole time history.
+  opt.keepSamples = spec.standardTest != scenario::StandardTest::None;
   opt.stopRequested = &interruptRequested();
   // Without a telemetry file (and no course to judge) nothing is sampled:
   // the printed time per step is then the step alone.
-  opt.sample = !out.empty() || sim.course().has_value();
+  opt.sample = !out.empty() || sim.course().has_value() || opt.keepSamples;
   const scenario::RunResult r = scenario::runScenario(sim, opt);
   if (!r.ok) {
     std::fprintf(stderr, "error: %s: the run failed at t = %.3f s: %s\n", path.c_str(), r.failureTime, r.failure.c_str());
@@ -47,6 +63,7 @@ int runRun(const std::string& path, const std::string& out, const ScenarioOverri
     std::printf("fidelity auto: %ld switch%s; steps on the linkage %ld, kinematic %ld, planar %ld\n", r.fidelitySwitches,
                 r.fidelitySwitches == 1 ? "" : "es", r.stepsPerModel[0], r.stepsPerModel[1], r.stepsPerModel[2]);
   }
+  if (spec.standardTest != scenario::StandardTest::None && !r.interrupted) printStandardTest(spec, sim, r, metrics);
   if (r.course) {
     const auto& cr = *r.course;
     std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
@@ -71,8 +88,11 @@ void addRunCommand(CLI::App& app, CommandList& commands) {
   auto ov = std::make_shared<ScenarioOverrides>();
   cmd->add_option("scenario", *path, "Scenario file (assets/scenarios/*.toml)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out,-o", *out, "Telemetry CSV to write (without it the steps alone are timed)");
+  auto metrics = std::make_shared<std::string>();
+  cmd->add_option("--metrics", *metrics,
+                  "With a standard test ([metrics] test in the scenario): also write its metrics as JSON here");
   addOverrideOptions(*cmd, *ov);
-  commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *ov); }); }});
+  commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *metrics, *ov); }); }});
 }
 
 }  // namespace bdfcar::app

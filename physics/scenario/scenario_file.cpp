@@ -226,6 +226,13 @@ ScenarioSpec loadScenarioFile(const std::string& path) {
     if (s.steering.kind != SignalSpec::Kind::None) root.fail("give either [steering] or a path_follower [driver], not both", "driver");
   }
   if (auto c = root.optionalTable("check")) s.check = readCheck(*c);
+  if (auto m = root.optionalTable("metrics")) {
+    const std::string test = m->string("test");
+    if (test == "iso7401_step_steer") s.standardTest = StandardTest::Iso7401StepSteer;
+    else if (test == "fmvss126_sine_with_dwell") s.standardTest = StandardTest::Fmvss126SineWithDwell;
+    else m->fail("unknown standard test '" + test + "': expected iso7401_step_steer or fmvss126_sine_with_dwell", "test");
+    m->finish();
+  }
   root.finish();
   return s;
 }

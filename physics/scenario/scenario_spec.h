@@ -90,6 +90,10 @@ struct AutoRungs {
 };
 AutoRungs autoRungs(double errorBudget);
 
+// A standard test the scenario is ([metrics] test): its metrics are
+// computed after the run (scenario/standard_tests.h).
+enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell };
+
 struct ScenarioSpec {
   std::string name, sourceFile;
   std::string vehicleFile, terrainFile;  // resolved paths; terrainFile empty = flat plane z = 0
@@ -109,6 +113,7 @@ struct ScenarioSpec {
   CourseSpec course;
   PathFollowerSpec pathFollower;
   CheckSpec check;
+  StandardTest standardTest = StandardTest::None;
 };
 
 // "linkage", "kinematic" or "planar"; false for anything else.

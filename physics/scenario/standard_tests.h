@@ -1,0 +1,87 @@
+// The metrics of standard vehicle-dynamics tests, computed from a run's
+// time histories (docs/STANDARD_TESTS.md gives each definition and its
+// source):
+//  - ISO 7401 step steer: response times and peak response times of yaw
+//    rate and lateral acceleration, measured from the instant the steering
+//    reaches 50 % of its step; overshoot; steady-state gains;
+//  - FMVSS 126 / UN R13-H sine with dwell: yaw rate 1.00 s and 1.75 s after
+//    the completion of steer as % of the peak yaw rate, lateral displacement
+//    1.07 s after the beginning of steer, each with the regulation's limit.
+// Plain functions of arrays (time, inputs, responses): tested on synthetic
+// responses with known answers, then applied to simulated runs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenario/run.h"
+#include "scenario/scenario_spec.h"
+
+namespace bdfcar::scenario {
+
+struct TimeHistory {
+  std::vector<double> t;       // s, increasing
+  std::vector<double> steer;   // steering-wheel angle, deg (any consistent unit)
+  std::vector<double> yawRate; // rad/s
+  std::vector<double> ay;      // m/s^2
+  std::vector<double> x, y;    // m, centre of mass in the ground plane
+  std::vector<double> heading; // rad
+};
+
+// One response (yaw rate or lateral acceleration) to a step.
+struct StepResponse {
+  double steady = 0;        // mean over the steady window
+  double gain = 0;          // steady / steady steering
+  double responseTime = 0;  // s from the 50 % steering instant to 90 % of steady
+  double peakTime = 0;      // s from the 50 % steering instant to the peak
+  double overshoot = 0;     // (peak - steady) / steady, 0 when the peak is the steady value
+};
+
+struct StepSteerMetrics {
+  bool valid = false;
+  std::string why;          // when !valid
+  double steerStep = 0;     // steady steering (same unit as the input)
+  double t50 = 0;           // s, the steering at 50 % of its step
+  StepResponse yawRate, ay;
+};
+
+// steadyWindow: the last seconds of the run over which the steady values are averaged.
+StepSteerMetrics iso7401StepSteer(const TimeHistory& h, double steadyWindow = 1.0);
+
+struct SineWithDwellMetrics {
+  bool valid = false;
+  std::string why;
+  double beginOfSteer = 0, completionOfSteer = 0;  // s
+  double peakYawRate = 0;                          // rad/s, the peak after the steering reverses
+  double yawRatio1000 = 0, yawRatio1750 = 0;       // % of the peak, 1.00 s and 1.75 s after completion
+  double lateralDisplacement = 0;                  // m, 1.07 s after the beginning of steer
+  bool passYaw1000 = false, passYaw1750 = false, passDisplacement = false;
+  // The regulation's limits (FMVSS 126 S5.2, S5.3; vehicles up to 3500 kg).
+  static constexpr double kYaw1000Limit = 35.0, kYaw1750Limit = 20.0, kDisplacementLimit = 1.83;
+  // The completion of steer: the second lobe back within this fraction of its peak.
+  static constexpr double kZeroBand = 0.01;
+};
+
+// beginThreshold: |steer| that marks the beginning of steer (the
+// regulation's 5 deg of handwheel angle when steer is in degrees).
+SineWithDwellMetrics fmvss126SineWithDwell(const TimeHistory& h, double beginThreshold = 5.0);
+
+// A run's time history (its kept samples and steering inputs); the steering
+// as steering-wheel angle in deg, from the input's full scale (rad).
+TimeHistory timeHistory(const RunResult& r, double steeringWheelFull);
+
+// The scenario's standard test on a time history: its metrics as text lines
+// and as one JSON object.
+struct StandardTestReport {
+  bool valid = false;
+  std::string text, json;
+};
+StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h);
+
+// The metrics as text lines and as one JSON object.
+std::string describe(const StepSteerMetrics& m);
+std::string describe(const SineWithDwellMetrics& m);
+std::string toJson(const StepSteerMetrics& m);
+std::string toJson(const SineWithDwellMetrics& m);
+
+}  // namespace bdfcar::scenario

@@ -1,0 +1,145 @@
+// The standard tests' metrics (scenario/standard_tests.h) on synthetic
+// responses whose metrics are known in closed form: a first-order yaw-rate
+// response (90 % at tau ln 10), a second-order lateral-acceleration response
+// (overshoot exp(-pi zeta / sqrt(1 - zeta^2)), peak at pi / omega_d), and a
+// sine with dwell with an exponentially decaying yaw rate and a parabolic
+// lateral path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scenario/standard_tests.h"
+
+namespace bdfcar::scenario {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Second-order step response (unit steady value) at time s after the step.
+double secondOrder(double s, double zeta, double wn) {
+  if (s <= 0) return 0;
+  const double wd = wn * std::sqrt(1 - zeta * zeta);
+  return 1 - std::exp(-zeta * wn * s) * (std::cos(wd * s) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * s));
+}
+
+TEST(Iso7401, FirstAndSecondOrderResponsesGiveTheirClosedFormMetrics) {
+  const double dt = 1e-3, ramp0 = 1.0, ramp1 = 1.1, step = 90.0;  // deg of steering wheel in 0.1 s
+  const double t50 = 0.5 * (ramp0 + ramp1), tau = 0.2, gainYaw = 0.004, gainAy = 0.05, zeta = 0.5, wn = 10.0;
+  TimeHistory h;
+  for (double t = 0; t <= 6.0 + 1e-9; t += dt) {
+    h.t.push_back(t);
+    h.steer.push_back(step * std::clamp((t - ramp0) / (ramp1 - ramp0), 0.0, 1.0));
+    const double s = t - t50;
+    h.yawRate.push_back(s > 0 ? gainYaw * step * (1 - std::exp(-s / tau)) : 0.0);
+    h.ay.push_back(gainAy * step * secondOrder(s, zeta, wn));
+  }
+  const StepSteerMetrics m = iso7401StepSteer(h, 1.0);
+  ASSERT_TRUE(m.valid) << m.why;
+  EXPECT_NEAR(m.t50, t50, 1e-9);
+  EXPECT_NEAR(m.steerStep, step, 1e-9);
+  EXPECT_NEAR(m.yawRate.gain, gainYaw, 1e-9);
+  EXPECT_NEAR(m.yawRate.responseTime, tau * std::log(10.0), 1e-4);
+  EXPECT_NEAR(m.yawRate.overshoot, 0.0, 1e-9);
+  EXPECT_NEAR(m.ay.gain, gainAy, 1e-5);
+  const double wd = wn * std::sqrt(1 - zeta * zeta);
+  EXPECT_NEAR(m.ay.peakTime, kPi / wd, 1e-3);
+  EXPECT_NEAR(m.ay.overshoot, std::exp(-kPi * zeta / std::sqrt(1 - zeta * zeta)), 1e-4);
+  // 90 % of the second-order response: its first crossing, by bisection on the formula.
+  double lo = 0, hi = kPi / wd;
+  for (int i = 0; i < 60; ++i) (secondOrder(0.5 * (lo + hi), zeta, wn) < 0.9 ? lo : hi) = 0.5 * (lo + hi);
+  EXPECT_NEAR(m.ay.responseTime, lo, 1e-4);
+}
+
+TEST(Iso7401, ARunWithoutASteeringStepHasNoMetrics) {
+  TimeHistory h;
+  for (int i = 0; i < 300; ++i) {
+    h.t.push_back(0.01 * i);
+    h.steer.push_back(0);
+    h.yawRate.push_back(0);
+    h.ay.push_back(0);
+  }
+  const StepSteerMetrics m = iso7401StepSteer(h);
+  EXPECT_FALSE(m.valid);
+  EXPECT_NE(m.why.find("no steering step"), std::string::npos);
+}
+
+// Sine with dwell at 0.7 Hz and amplitude A from t = 1 s: 3/4 of a period,
+// 0.5 s at -A, the last quarter period back to zero.
+TimeHistory sineWithDwell(double amplitude, double peak, double tau, double c) {
+  const double f = 0.7, t0 = 1.0, dwell0 = t0 + 0.75 / f, dwell1 = dwell0 + 0.5, end = dwell1 + 0.25 / f;
+  TimeHistory h;
+  for (double t = 0; t <= 6.0 + 1e-9; t += 1e-3) {
+    double steer = 0;
+    if (t > t0 && t < dwell0) steer = amplitude * std::sin(2 * kPi * f * (t - t0));
+    else if (t >= dwell0 && t < dwell1) steer = -amplitude;
+    else if (t >= dwell1 && t < end) steer = amplitude * std::sin(2 * kPi * f * (t - dwell1 + 0.75 / f));
+    h.t.push_back(t);
+    h.steer.push_back(steer);
+    // Yaw rate: the peak held from the reversal to the completion of steer, then decaying.
+    const double reversal = t0 + 0.5 / f;
+    h.yawRate.push_back(t < reversal ? 0.1 : (t < end ? -peak : -peak * std::exp(-(t - end) / tau)));
+    h.x.push_back(22.0 * t);
+    const double bos = t0 + std::asin(5.0 / amplitude) / (2 * kPi * f);
+    h.y.push_back(t > bos ? c * (t - bos) * (t - bos) : 0.0);
+    h.heading.push_back(0.0);
+  }
+  return h;
+}
+
+TEST(Fmvss126, SineWithDwellGivesItsClosedFormRatiosAndDisplacement) {
+  const double amplitude = 180, peak = 0.5, tau = 0.5, c = 2.0, f = 0.7;
+  const SineWithDwellMetrics m = fmvss126SineWithDwell(sineWithDwell(amplitude, peak, tau, c));
+  ASSERT_TRUE(m.valid) << m.why;
+  EXPECT_NEAR(m.beginOfSteer, 1.0 + std::asin(5.0 / amplitude) / (2 * kPi * f), 1e-4);
+  // Completion: the last quarter period back within 1 % of the amplitude.
+  const double end = 1.0 + 0.75 / f + 0.5 + 0.25 / f;
+  const double completion = end - std::asin(SineWithDwellMetrics::kZeroBand) / (2 * kPi * f);
+  EXPECT_NEAR(m.completionOfSteer, completion, 1e-5);
+  EXPECT_NEAR(m.peakYawRate, peak, 1e-12);
+  EXPECT_NEAR(m.yawRatio1000, 100 * std::exp(-(completion + 1.0 - end) / tau), 1e-3);
+  EXPECT_NEAR(m.yawRatio1750, 100 * std::exp(-(completion + 1.75 - end) / tau), 1e-3);
+  EXPECT_NEAR(m.lateralDisplacement, c * 1.07 * 1.07, 1e-3);
+  EXPECT_TRUE(m.passYaw1000 && m.passYaw1750 && m.passDisplacement);
+  // A slow decay fails both yaw criteria; a small displacement fails the third.
+  const SineWithDwellMetrics slow = fmvss126SineWithDwell(sineWithDwell(amplitude, peak, 2.0, 1.0));
+  ASSERT_TRUE(slow.valid) << slow.why;
+  EXPECT_NEAR(slow.yawRatio1000, 100 * std::exp(-(slow.completionOfSteer + 1.0 - 2.9285714285714284) / 2.0), 1e-3);
+  EXPECT_FALSE(slow.passYaw1000);
+  EXPECT_FALSE(slow.passYaw1750);
+  EXPECT_FALSE(slow.passDisplacement);
+}
+
+}  // namespace
+}  // namespace bdfcar::scenario
+
+namespace bdfcar::scenario {
+namespace {
+
+std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
+
+// The shipped standard tests run and give their metrics. The step steer's
+// steady state checks itself against the kinematics of steady cornering
+// (a_y = V r, the sideslip steady) within 1 %.
+TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
+  for (const char* file : {"scenarios/standard/iso7401_step_steer_80.toml",
+                           "scenarios/standard/fmvss126_sine_with_dwell_80.toml"}) {
+    const ScenarioSpec spec = loadScenarioFile(asset(file));
+    ASSERT_NE(spec.standardTest, StandardTest::None) << file;
+    Simulation sim(spec);
+    const RunResult r = runScenario(sim, {});
+    ASSERT_TRUE(r.ok) << r.failure;
+    const TimeHistory h = timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull);
+    const StandardTestReport report = standardTestReport(spec.standardTest, h);
+    EXPECT_TRUE(report.valid) << file << ": " << report.text;
+    if (spec.standardTest == StandardTest::Iso7401StepSteer) {
+      const StepSteerMetrics m = iso7401StepSteer(h);
+      const double speed = r.samples.back().speed;
+      EXPECT_NEAR(m.ay.steady, speed * m.yawRate.steady, 0.01 * m.ay.steady);
+      EXPECT_GT(m.yawRate.responseTime, 0.0);
+      EXPECT_LT(m.yawRate.responseTime, m.ay.responseTime);  // yaw leads lateral acceleration
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bdfcar::scenario
