@@ -9,10 +9,12 @@
 #include "commands.h"
 #include "config/toml_reader.h"
 #include "multibody/model.h"
+#include "multibody/model_error.h"
 #include "terrain/terrain_file.h"
 #include "scenario/scenario_spec.h"
 #include "vehicle/kinematic_model.h"
 #include "vehicle/planar_model.h"
+#include "vehicle/vehicle_sheet.h"
 #include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_file.h"
@@ -115,6 +117,13 @@ int runInfo(const std::string& path, const std::string& fidelity) {
   std::printf("degrees of freedom: %d (+%d wheel spin); with the rack prescribed: %d\n", coords - cuts, spin,
               coords - cuts - (m.nc - cuts));
   std::printf("total mass: %.3f kg\n", m.totalMass());
+  // The sheet, when the linkage can be swept (a vehicle that cannot is
+  // still described above).
+  try {
+    std::printf("\n%s", vehicle::describe(vehicle::vehicleSheet(v)).c_str());
+  } catch (const mb::ModelError& e) {
+    std::printf("\nno vehicle sheet: %s\n", e.what());
+  }
   vehicle::Fidelity f = vehicle::Fidelity::Linkage;
   if (!fidelity.empty()) scenario::parseFidelity(fidelity, f);
   if (f != vehicle::Fidelity::Linkage) printDerived(v, f);

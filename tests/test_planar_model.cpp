@@ -11,6 +11,7 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/planar_model.h"
 #include "vehicle/vehicle_file.h"
+#include "vehicle/vehicle_sheet.h"
 
 namespace bdfcar {
 namespace {
@@ -55,6 +56,22 @@ TEST_P(PlanarModel, KeepsTheLinkagesMassAndLoadsWithoutItsLoopsOrSprings) {
   EXPECT_NEAR(v.planar->wheelbase, link.spec.geometry.wheelbase, 0.02);
   EXPECT_GT(v.planar->axisHeight, -0.2);
   EXPECT_LT(v.planar->axisHeight, eq.comHeight);
+}
+
+// The vehicle sheet: the static axle loads (the kinematic model's tyre loads
+// at rest) balance the weight about the centre of mass (the bodies' mass
+// properties): a moment balance the derivation does not use.
+TEST_P(PlanarModel, SheetAxleLoadsBalanceTheWeightAboutTheCentreOfMass) {
+  const vehicle::Vehicle link = vehicle::buildVehicle(vehicle::loadVehicleFile(asset(GetParam())));
+  const vehicle::VehicleSheet s = vehicle::vehicleSheet(link);
+  std::printf("%s", vehicle::describe(s).c_str());
+  const double weight = s.mass * 9.81;
+  EXPECT_NEAR(s.axleLoad[0] + s.axleLoad[1], weight, 1e-3 * weight);
+  const double frontShare = (s.wheelbase - s.comBehindFrontAxle) / s.wheelbase;
+  EXPECT_NEAR(s.axleLoad[0] / (s.axleLoad[0] + s.axleLoad[1]), frontShare, 2e-3);
+  EXPECT_GT(s.steeringRatio, 1.0);
+  EXPECT_GT(s.rideFrequency[0], 0.5);
+  EXPECT_LT(s.rideFrequency[0], 5.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(ReferenceVehicles, PlanarModel, ::testing::Values("vehicles/sedan.toml", "vehicles/paper.toml"));

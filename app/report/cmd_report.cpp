@@ -273,6 +273,7 @@ int runReport(const ReportArgs& a) {
       {"hard", [&] { hardCasesSection(md, a.repeats); }},
       {"speed", [&] { speedSection(md, a); }},
       {"fidelity", [&] { fidelitySection(md, a.repeats, imageDir.string()); }},
+      {"standard", [&] { standardTestsSection(md); }},
       {"work-precision", [&] { workPrecisionSection(md, imageDir.string()); }},
       {"survival", [&] { survivalSection(md); }},
   };
@@ -299,9 +300,9 @@ void addReportCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--repeats", a->repeats, "Runs per timing (median)")->check(CLI::Range(1, 100));
   cmd->add_option("--only", a->only,
                   "Only these sections (reference, topologies, tables, explicit, hard, speed, fidelity, "
-                  "work-precision, survival): a partial file, for working on one")
+                  "standard, work-precision, survival): a partial file, for working on one")
       ->check(CLI::IsMember({"reference", "topologies", "tables", "explicit", "hard", "speed", "fidelity",
-                             "work-precision", "survival"}));
+                             "standard", "work-precision", "survival"}));
   commands.push_back({cmd, [a] { return reportErrors([&] { return runReport(*a); }); }});
 }
 

@@ -63,6 +63,9 @@ void writePlot(const std::string& dataPath, const std::string& png, const std::s
 // converged at 1 ms on smooth and hard manoeuvres (images under imageDir).
 void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir);
 
+// Section of RESULTS.md: the reference sedan's vehicle sheet and standard-test metrics.
+void standardTestsSection(std::ostream& md);
+
 // Sections of RESULTS.md: work-precision diagrams (image under imageDir) and
 // the hard cases' survival at long steps and with explicit methods.
 void workPrecisionSection(std::ostream& md, const std::string& imageDir);

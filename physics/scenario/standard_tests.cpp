@@ -181,7 +181,7 @@ std::string describe(const StepSteerMetrics& m) {
   if (!m.valid) return "ISO 7401 step steer: no metrics (" + m.why + ")\n";
   char buf[900];
   std::snprintf(buf, sizeof buf,
-                "ISO 7401 step steer (steering step %.4g at t50 = %.3f s):\n"
+                "ISO 7401 step steer (steering-wheel step %.4g deg, at 50 %% at t50 = %.3f s):\n"
                 "  yaw rate: steady %.4f rad/s (gain %.4g per deg of steering wheel), response time %.3f s, "
                 "peak response time %.3f s, overshoot %.1f %%\n"
                 "  lateral acceleration: steady %.3f m/s^2 (gain %.4g), response time %.3f s, peak response time "

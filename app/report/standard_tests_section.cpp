@@ -1,0 +1,34 @@
+// RESULTS.md section: the reference sedan's vehicle sheet and its metrics in
+// the shipped standard tests (assets/scenarios/standard/, docs/STANDARD_TESTS.md).
+#include <filesystem>
+
+#include "report/studies.h"
+#include "scenario/standard_tests.h"
+#include "vehicle/vehicle_file.h"
+#include "vehicle/vehicle_sheet.h"
+
+namespace bdfcar::app {
+
+void standardTestsSection(std::ostream& md) {
+  const vehicle::Vehicle sedan = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/sedan.toml")));
+  md << "## 5e. The reference sedan: vehicle sheet and standard tests\n\n"
+     << "`bdfcar info assets/vehicles/sedan.toml` prints the sheet, derived from the linkage (no figure entered "
+     << "by hand; the steering ratio is the reference data's: 30 deg of steering wheel at full input):\n\n```\n"
+     << vehicle::describe(vehicle::vehicleSheet(sedan)) << "```\n\n"
+     << "The shipped standard tests (definitions and sources: docs/STANDARD_TESTS.md), at the paper's setting:\n\n";
+  for (const char* file : {"standard/iso7401_step_steer_80.toml", "standard/fmvss126_sine_with_dwell_80.toml"}) {
+    const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
+    scenario::Simulation sim(spec);
+    const scenario::RunResult r = scenario::runScenario(sim, {});
+    if (!r.ok) {
+      md << "`" << file << "`: the run failed: " << r.failure << "\n\n";
+      continue;
+    }
+    const scenario::StandardTestReport report = scenario::standardTestReport(
+        spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
+    md << "```\n" << report.text << "```\n\n";
+    command(md, std::string("assets/scenarios/") + file + " --metrics metrics.json");
+  }
+}
+
+}  // namespace bdfcar::app
