@@ -51,6 +51,8 @@ constexpr std::array kUnits = {
     UnitEntry{Dimension::AngularStiffness, "N*m/rad", 1.0},
     UnitEntry{Dimension::AngularStiffness, "N*m/deg", kDegPerRad},
     UnitEntry{Dimension::TorqueRate, "N*m*s/m", 1.0},
+    UnitEntry{Dimension::Frequency, "Hz", 1.0},
+    UnitEntry{Dimension::Frequency, "1/s", 1.0},
 };
 
 // Canonical spelling: spaces between factors become '*', "m2" becomes "m^2".
@@ -92,6 +94,7 @@ const char* dimensionName(Dimension d) {
     case Dimension::Inertia: return "moment of inertia";
     case Dimension::AngularStiffness: return "angular stiffness";
     case Dimension::TorqueRate: return "torque per speed";
+    case Dimension::Frequency: return "frequency";
   }
   return "?";
 }
@@ -113,6 +116,7 @@ const char* siUnit(Dimension d) {
     case Dimension::Inertia: return "kg*m^2";
     case Dimension::AngularStiffness: return "N*m/rad";
     case Dimension::TorqueRate: return "N*m*s/m";
+    case Dimension::Frequency: return "Hz";
   }
   return "?";
 }

@@ -24,6 +24,7 @@ enum class Dimension {
   Inertia,         // kg m^2
   AngularStiffness,// N m/rad
   TorqueRate,      // N m per (m/s) (speed-controller gains)
+  Frequency,       // Hz
 };
 
 const char* dimensionName(Dimension d);   // e.g. "length"

@@ -20,6 +20,7 @@ const Range kStep{1e-6, 0.1};                      // s (--step)
 const Range kTick{1e-3, 0.1};                      // s (--tick)
 const Range kOutputInterval{0.0, 1e6, true, true}; // s
 const Range kErrorBudget{0.0, 1.0, true, false};   // fraction of peak ("5 %")
+const Range kFrequency{0.0, 1e3};                  // Hz (a chirp's ends)
 const Range kSpeed{0.0, 150.0, false, true};       // m/s (540 km/h)
 const Range kPosition{-1e6, 1e6};                  // m
 const Range kHeading{-1e3, 1e3};                   // rad
@@ -64,6 +65,20 @@ SignalSpec readSignal(Table t, double lo, double hi) {
     s.start = t.number("start", Dimension::Time, kTime);
     s.duration = t.number("period", Dimension::Time, kSpan);
     s.level = level("amplitude");
+    s.periods = static_cast<int>(t.integerIn("periods", 1, 10000, 1));
+  } else if (type == "sine_with_dwell") {
+    s.kind = SignalSpec::Kind::SineWithDwell;
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("period", Dimension::Time, kSpan);
+    s.level = level("amplitude");
+    s.dwell = t.number("dwell", Dimension::Time, kTime, s.dwell);
+  } else if (type == "chirp") {
+    s.kind = SignalSpec::Kind::Chirp;
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("duration", Dimension::Time, kSpan);
+    s.level = level("amplitude");
+    s.f0 = t.number("f0", Dimension::Frequency, kFrequency);
+    s.f1 = t.number("f1", Dimension::Frequency, kFrequency);
   } else if (type == "square") {
     s.kind = SignalSpec::Kind::Square;
     s.start = t.number("start", Dimension::Time, kTime);
@@ -79,7 +94,7 @@ SignalSpec readSignal(Table t, double lo, double hi) {
     for (size_t i = 1; i < s.times.size(); ++i)
       if (!(s.times[i] > s.times[i - 1])) t.reject("times", "strictly increasing times", static_cast<int>(i));
   } else {
-    t.fail("unknown signal type '" + type + "': expected none, constant, ramp, sine, square or table", "type");
+    t.fail("unknown signal type '" + type + "': expected none, constant, ramp, sine, sine_with_dwell, chirp, square or table", "type");
   }
   // A driver's command through the vehicle's steering system (as a person's
   // input, sampled once a tick) rather than a prescribed rack motion.

@@ -25,8 +25,11 @@ struct IntegratorSpec {
 
 // A scripted input channel (steering in [-1, 1], throttle and brake in [0, 1]).
 struct SignalSpec {
-  enum class Kind { None, Constant, Ramp, Sine, Square, Table } kind = Kind::None;
+  enum class Kind { None, Constant, Ramp, Sine, SineWithDwell, Chirp, Square, Table } kind = Kind::None;
   double start = 0, duration = 0, level = 0;  // ramp: from 0 at start to level after duration; sine, square: period = duration, amplitude = level
+  int periods = 1;                            // sine: whole periods
+  double dwell = 0.5;                         // sine with dwell: s at the second peak
+  double f0 = 0, f1 = 0;                      // chirp: Hz at its start and end (duration: its length)
   std::vector<double> times, values;          // table
   bool asDriverCommand = false;               // steering: through the steering system, once a tick
 };

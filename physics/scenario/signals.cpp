@@ -12,10 +12,35 @@ SignalValue RampSignal::at(double t) const {
   return {level_, 0, 0};
 }
 
+namespace {
+// amplitude sin(w tau) and its two derivatives.
+SignalValue sine(double amplitude, double w, double tau) {
+  const double x = w * tau;
+  return {amplitude * std::sin(x), amplitude * w * std::cos(x), -amplitude * w * w * std::sin(x)};
+}
+}  // namespace
+
 SignalValue SinePeriodSignal::at(double t) const {
-  if (t < start_ || t >= start_ + period_) return {};
-  const double w = 2 * std::numbers::pi / period_, x = w * (t - start_);
-  return {amplitude_ * std::sin(x), amplitude_ * w * std::cos(x), -amplitude_ * w * w * std::sin(x)};
+  if (!(t >= start_) || t >= start_ + periods_ * period_) return {};
+  return sine(amplitude_, 2 * std::numbers::pi / period_, t - start_);
+}
+
+SignalValue SineWithDwellSignal::at(double t) const {
+  const double w = 2 * std::numbers::pi / period_, tau = t - start_;
+  if (!(tau >= 0)) return {};
+  if (tau < 0.75 * period_) return sine(amplitude_, w, tau);
+  if (tau < 0.75 * period_ + dwell_) return {-amplitude_, 0, 0};
+  if (tau < period_ + dwell_) return sine(amplitude_, w, tau - dwell_);
+  return {};
+}
+
+SignalValue ChirpSignal::at(double t) const {
+  const double tau = t - start_;
+  if (!(tau >= 0) || tau >= duration_) return {};
+  const double k = (f1_ - f0_) / duration_, two_pi = 2 * std::numbers::pi;
+  const double phi = two_pi * (f0_ * tau + 0.5 * k * tau * tau), rate = two_pi * (f0_ + k * tau), accel = two_pi * k;
+  const double s = std::sin(phi), c = std::cos(phi);
+  return {amplitude_ * s, amplitude_ * c * rate, amplitude_ * (c * accel - s * rate * rate)};
 }
 
 SignalValue SquareSignal::at(double t) const {

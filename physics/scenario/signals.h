@@ -23,14 +23,45 @@ class RampSignal final : public Signal {
   double start_, rise_, level_;
 };
 
-// amplitude * sin(2 pi (t - start) / period) for one period from `start`, else 0 (the lane change).
+// amplitude * sin(2 pi (t - start) / period) for `periods` whole periods
+// from `start`, else 0 (one period: the lane change).
 class SinePeriodSignal final : public Signal {
  public:
-  SinePeriodSignal(double start, double period, double amplitude) : start_(start), period_(period), amplitude_(amplitude) {}
+  SinePeriodSignal(double start, double period, double amplitude, int periods = 1)
+      : start_(start), period_(period), amplitude_(amplitude), periods_(periods) {}
   SignalValue at(double t) const override;
 
  private:
   double start_, period_, amplitude_;
+  int periods_;
+};
+
+// Sine with dwell (FMVSS 126): amplitude * sin(2 pi (t - start) / period)
+// for 3/4 of a period (to its second peak, -amplitude), held for `dwell`,
+// then the last quarter period back to zero; 0 elsewhere. C1 across the
+// dwell, with exact derivatives on each piece; at its end the value returns
+// to zero from its last slope (as the regulation's steering robot stops).
+class SineWithDwellSignal final : public Signal {
+ public:
+  SineWithDwellSignal(double start, double period, double amplitude, double dwell)
+      : start_(start), period_(period), amplitude_(amplitude), dwell_(dwell) {}
+  SignalValue at(double t) const override;
+
+ private:
+  double start_, period_, amplitude_, dwell_;
+};
+
+// Linear chirp: amplitude * sin(phi) with phi = 2 pi (f0 tau + (f1 - f0)
+// tau^2 / (2 duration)), tau = t - start, for `duration` from `start` (the
+// frequency sweeps from f0 to f1); 0 elsewhere. For frequency responses.
+class ChirpSignal final : public Signal {
+ public:
+  ChirpSignal(double start, double duration, double amplitude, double f0, double f1)
+      : start_(start), duration_(duration), amplitude_(amplitude), f0_(f0), f1_(f1) {}
+  SignalValue at(double t) const override;
+
+ private:
+  double start_, duration_, amplitude_, f0_, f1_;
 };
 
 // +amplitude for the first half of each period from `start`, -amplitude for

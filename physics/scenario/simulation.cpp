@@ -44,7 +44,10 @@ std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
     case SignalSpec::Kind::None: return std::make_unique<ConstantSignal>(0.0);
     case SignalSpec::Kind::Constant: return std::make_unique<ConstantSignal>(s.level);
     case SignalSpec::Kind::Ramp: return std::make_unique<RampSignal>(s.start, s.duration, s.level);
-    case SignalSpec::Kind::Sine: return std::make_unique<SinePeriodSignal>(s.start, s.duration, s.level);
+    case SignalSpec::Kind::Sine: return std::make_unique<SinePeriodSignal>(s.start, s.duration, s.level, s.periods);
+    case SignalSpec::Kind::SineWithDwell:
+      return std::make_unique<SineWithDwellSignal>(s.start, s.duration, s.level, s.dwell);
+    case SignalSpec::Kind::Chirp: return std::make_unique<ChirpSignal>(s.start, s.duration, s.level, s.f0, s.f1);
     case SignalSpec::Kind::Square: return std::make_unique<SquareSignal>(s.start, s.duration, s.level);
     case SignalSpec::Kind::Table: return std::make_unique<TableSignal>(s.times, s.values);
   }
