@@ -103,11 +103,10 @@ int runInfo(const std::string& path, const std::string& fidelity) {
   }
   std::printf("\nspring-dampers (%zu), motion ratio dL/dz of the wheel centre at design:\n", m.springs.size());
   const std::vector<vehicle::MotionRatio> ratios = vehicle::motionRatios(v);
-  static const char* kWheel[4] = {"FL", "FR", "RL", "RR"};
   for (size_t k = 0; k < m.springs.size(); ++k) {
     const mb::SpringDamper& s = m.springs[k];
     std::printf("  %-18s %s - %s", s.name.c_str(), m.bodies[s.bodyA].name.c_str(), m.bodies[s.bodyB].name.c_str());
-    if (ratios[k].wheel >= 0) std::printf("  (%s: %+.5f)", kWheel[ratios[k].wheel], ratios[k].ratio);
+    if (ratios[k].wheel >= 0) std::printf("  (%s: %+.5f)", vehicle::kCornerNames[ratios[k].wheel], ratios[k].ratio);
     std::printf("\n");
   }
   const int spin = v.layout.spinCoordinates;

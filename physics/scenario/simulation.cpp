@@ -450,7 +450,6 @@ integ::StepReport Simulation::step() {
 std::optional<std::string> Simulation::offLevelGround() const {
   // The planar model has no heave, roll or pitch of its base: the ground
   // under every wheel must be its road plane, or the run stops saying so.
-  static const char* kCorner[4] = {"FL", "FR", "RL", "RR"};
   const double road = vehicle().model.bodies[vehicle().layout.base].inParent.origin.z();
   for (int w = 0; w < 4; ++w) {
     const tyre::ContactPlane& g = forces_->wheels()[w].plane;
@@ -461,7 +460,7 @@ std::optional<std::string> Simulation::offLevelGround() const {
     std::snprintf(buf, sizeof buf,
                   "the planar model left level ground at t = %.2f s: under wheel %s at x = %.1f m, y = %.1f m the "
                   "ground %s; [fidelity] suspension = planar drives on level ground only (use kinematic or linkage)",
-                  time(), kCorner[w], g.point.x(), g.point.y(),
+                  time(), vehicle::kCornerNames[w], g.point.x(), g.point.y(),
                   !g.valid ? "is missing"
                            : (std::abs(rise) > FidelityPolicy::kRoadHeight ? (rise > 0 ? "rises above the road plane" : "drops below the road plane")
                                                                  : "slopes"));

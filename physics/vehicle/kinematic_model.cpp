@@ -23,7 +23,6 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-const char* kCorner[4] = {"FL", "FR", "RL", "RR"};
 
 // The linkage held by its chassis at design, with each wheel centre moved by
 // s vertically relative to the chassis and the rack at r: Newton on the loop
@@ -176,7 +175,7 @@ Sweep sweepLinkage(const Vehicle& v, LinkageSweep& ls, const KinematicGrid& g, d
     for (size_t k = 0; k < ratios.size(); ++k)
       if (ratios[k].wheel == w) c.springs.push_back(static_cast<int>(k));
     if (6 + c.springs.size() > static_cast<size_t>(mb::SplineGrid::kMaxComponents))
-      throw mb::ModelError(std::string("kinematic model: too many spring-dampers on wheel ") + kCorner[w]);
+      throw mb::ModelError(std::string("kinematic model: too many spring-dampers on wheel ") + kCornerNames[w]);
     c.samples.assign(6 + c.springs.size(), std::vector<double>(ns * nr));
   }
   // Rack rows from the centre outwards, travel from the centre outwards: each
@@ -331,7 +330,7 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
     cs.joint.parent = link.spec.bodies[LL.chassis].name;
     specs.push_back(cs);
     if (c.steered) {
-      addRackDriver(mbld, std::string("rack_travel_") + kCorner[w], carrierIndex[w], 1);
+      addRackDriver(mbld, std::string("rack_travel_") + kCornerNames[w], carrierIndex[w], 1);
     }
     mb::Body wheel = lm.bodies[LL.wheels[w].spindle];
     wheel.parent = carrierIndex[w];
@@ -518,7 +517,7 @@ KinematicDerivation deriveKinematic(const Vehicle& linkage, const KinematicGrid&
     const double others = m1 - perKg * trial[w];
     out.carrierMass[w] = (out.linkageTravelMass[w] - others) / perKg;
     if (!(out.carrierMass[w] > 0))
-      throw mb::ModelError(std::string("kinematic model: wheel ") + kCorner[w] +
+      throw mb::ModelError(std::string("kinematic model: wheel ") + kCornerNames[w] +
                            ": the linkage's travel inertia is below the wheel's own");
   }
   out.vehicle = buildKinematic(linkage, sw, ls.design(), out.carrierMass);
@@ -544,7 +543,7 @@ std::string describeKinematic(const KinematicDerivation& d) {
                 d.fromCache ? " (read from the cache)" : "");
   o << buf;
   for (int w = 0; w < 4; ++w) {
-    std::snprintf(buf, sizeof buf, "  %s: %s, carrier %.2f kg (linkage travel inertia %.2f kg)\n", kCorner[w],
+    std::snprintf(buf, sizeof buf, "  %s: %s, carrier %.2f kg (linkage travel inertia %.2f kg)\n", kCornerNames[w],
                   d.steered[w] ? "travel x rack" : "travel", d.carrierMass[w], d.linkageTravelMass[w]);
     o << buf;
   }

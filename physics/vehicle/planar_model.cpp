@@ -19,7 +19,6 @@ namespace {
 
 using Eigen::VectorXd;
 
-const char* kCorner[4] = {"FL", "FR", "RL", "RR"};
 
 // The kinematic model at rest on level ground.
 struct Rest {
@@ -112,7 +111,7 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
     const double damping = -(travelForce(km, u, s, rate) - travelForce(km, u, s, -rate)) / (2 * rate);
     const double kt = tyre::verticalStiffness(kin.wheel(w).tyre);
     if (!(out.wheelRate[w] > 0))
-      throw mb::ModelError(std::string("planar model: wheel ") + kCorner[w] + " has no spring rate at its static travel");
+      throw mb::ModelError(std::string("planar model: wheel ") + kCornerNames[w] + " has no spring rate at its static travel");
     const double series = kt / (out.wheelRate[w] + kt);
     loads.rate[w] = out.wheelRate[w] * series;
     loads.suspensionShare[w] = series;
@@ -243,7 +242,7 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
       sc.joint.type = carrier.joint;
       sc.joint.parent = b.name;
       specs.push_back(sc);
-      addRackDriver(mbld, std::string("rack_travel_") + kCorner[w], L.wheels[w].carrier);
+      addRackDriver(mbld, std::string("rack_travel_") + kCornerNames[w], L.wheels[w].carrier);
       wheel.parent = L.wheels[w].carrier;
     } else {
       // On the base, where its carrier sits at rest.
@@ -292,7 +291,7 @@ std::string describePlanar(const PlanarDerivation& d) {
     std::snprintf(buf, sizeof buf,
                   "  %s: static load %.0f N at travel %+.4f m, wheel rate %.0f N/m (%.0f N/m with the tyre), "
                   "damping %.0f N s/m\n",
-                  kCorner[w], P.staticLoad[w], d.staticTravel[w], d.wheelRate[w], P.rate[w], P.damping[w]);
+                  kCornerNames[w], P.staticLoad[w], d.staticTravel[w], d.wheelRate[w], P.rate[w], P.damping[w]);
     o << buf;
   }
   // Steady roll at 0.5 g: the sprung weight's moment about the roll axis

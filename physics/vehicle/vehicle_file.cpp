@@ -387,7 +387,7 @@ void Loader::readWheels() {
     }
     w.finish();
   }
-  const char* order[4] = {"FL", "FR", "RL", "RR"};
+  const auto& order = kCornerNames;
   root_.require(spec_.wheels.size() == 4, "wheels", "four wheels FL, FR, RL, RR");
   std::vector<WheelSpec> sorted;
   for (const char* pos : order) {

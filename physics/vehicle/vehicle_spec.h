@@ -56,6 +56,10 @@ struct SpringSpec {
   int line = 0;
 };
 
+// The corners in the order of every per-wheel array: front left, front
+// right, rear left, rear right.
+inline constexpr const char* kCornerNames[4] = {"FL", "FR", "RL", "RR"};
+
 struct WheelSpec {
   std::string position;        // FL, FR, RL, RR
   std::string spindle;         // body on the spin (revolute) joint
