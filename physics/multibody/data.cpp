@@ -26,6 +26,7 @@ Data makeData(const Model& model) {
   d.driverTargets.assign(model.nDrivers, SignalValue{});
   d.Ic.assign(nb, Mat6::Zero());
   d.springLength.assign(model.springs.size(), 0.0);
+  d.springLengthRate.assign(model.springs.size(), 0.0);
   d.springForce.assign(model.springs.size(), 0.0);
   return d;
 }

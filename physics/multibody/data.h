@@ -48,7 +48,7 @@ struct Data {
   std::vector<Mat6> Ic;           // (nbody) composite inertias
 
   // --- spring-damper state, for telemetry: computed by applySprings ---
-  std::vector<double> springLength, springForce;  // (nspring)
+  std::vector<double> springLength, springLengthRate, springForce;  // (nspring)
 };
 
 Data makeData(const Model& model);

@@ -28,6 +28,7 @@ void applySprings(const Model& model, Data& d) {
       for (int j = 0; j < b.nv; ++j) Ldot += t.grad[c][j] * rate[j];
       const double f = s.force(t.f[c], Ldot);
       d.springLength[k] = t.f[c];
+      d.springLengthRate[k] = Ldot;
       d.springForce[k] = f;
       for (int j = 0; j < b.nv; ++j) d.jointForce(b.vIndex + j) += f * t.grad[c][j];
       continue;
@@ -40,6 +41,7 @@ void applySprings(const Model& model, Data& d) {
     const double Ldot = u.dot(pointVelocity(d, s.bodyA, s.pointA) - pointVelocity(d, s.bodyB, s.pointB));
     const double f = s.force(L, Ldot);
     d.springLength[k] = L;
+    d.springLengthRate[k] = Ldot;
     d.springForce[k] = f;
     addWorldForce(d, s.bodyA, xa, f * u);
     addWorldForce(d, s.bodyB, xb, -f * u);

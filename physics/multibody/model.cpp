@@ -65,11 +65,13 @@ double ForceCurve::eval(double xv) const {
   return force[i - 1] + s * (force[i] - force[i - 1]);
 }
 
-double SpringDamper::force(double L, double Ldot) const {
-  double f = preload + spring.eval(freeLength - L) + damper.eval(-Ldot);
-  if (bumpLength > 0 && L < bumpLength) f += bumpStiffness * (bumpLength - L);
-  if (reboundLength > 0 && L > reboundLength) f -= reboundStiffness * (L - reboundLength);
-  return f;
+SpringDamper::Parts SpringDamper::parts(double L, double Ldot) const {
+  Parts p;
+  p.spring = preload + spring.eval(freeLength - L);
+  p.damper = damper.eval(-Ldot);
+  if (bumpLength > 0 && L < bumpLength) p.stop += bumpStiffness * (bumpLength - L);
+  if (reboundLength > 0 && L > reboundLength) p.stop -= reboundStiffness * (L - reboundLength);
+  return p;
 }
 
 int Model::bodyIndex(const std::string& name) const {

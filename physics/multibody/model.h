@@ -132,8 +132,14 @@ struct SpringDamper {
   // coordinates, and the force acts on them as the generalised force
   // F dL/dc (points unused). -1: a point-to-point element.
   int tableBody = -1, tableComponent = -1;
-  // Total force (+ = apart) at length L and rate dL/dt.
-  double force(double length, double lengthRate) const;
+  // The force (+ = apart) at length L and rate dL/dt, by where it comes
+  // from: the spring with its preload, the damper, the bump and rebound stops.
+  struct Parts {
+    double spring = 0, damper = 0, stop = 0;
+    double total() const { return spring + damper + stop; }
+  };
+  Parts parts(double length, double lengthRate) const;
+  double force(double length, double lengthRate) const { return parts(length, lengthRate).total(); }
 };
 
 struct Model {

@@ -15,7 +15,11 @@ const char* TelemetryWriter::header() {
          "Fy_FL_N,Fy_FR_N,Fy_RL_N,Fy_RR_N,kappa_RL,kappa_RR,"
          "ax_mps2,speed_mps,throttle_in,brake_in,kappa_FL,kappa_FR,Fx_FL_N,Fx_FR_N,Fx_RL_N,Fx_RR_N,"
          "spin_FL_radps,spin_FR_radps,spin_RL_radps,spin_RR_radps,rack_force_N,newton_iterations,newton_correction,"
-         "segment,fidelity";
+         "segment,fidelity,sideslip_rad,rollrate_radps,pitchrate_radps,steer_RL_deg,steer_RR_deg,"
+         "camber_FL_deg,camber_FR_deg,camber_RL_deg,camber_RR_deg,toe_FL_deg,toe_FR_deg,toe_RL_deg,toe_RR_deg,"
+         "travel_FL_m,travel_FR_m,travel_RL_m,travel_RR_m,Fspring_FL_N,Fspring_FR_N,Fspring_RL_N,Fspring_RR_N,"
+         "Fdamper_FL_N,Fdamper_FR_N,Fdamper_RL_N,Fdamper_RR_N,Fstop_FL_N,Fstop_FR_N,Fstop_RL_N,Fstop_RR_N,"
+         "Mz_FL_Nm,Mz_FR_Nm,Mz_RL_Nm,Mz_RR_Nm";
 }
 
 TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v)
@@ -129,7 +133,7 @@ void TelemetryWriter::formatRow(const Row& r) {
   const auto& st = v_.spec.steering;
   const double pinionDeg = config::radToDeg(st.steeringWheelFull * in.steer);
   // std::to_chars with a precision prints exactly what printf's %.10g does
-  // (the C++ standard defines it so), at a fraction of the cost: a 51-column
+  // (the C++ standard defines it so), at a fraction of the cost: a 53-column
   // row through snprintf cost as much as the physics step.
   const double values[] = {
       s.t, s.com.x(), s.com.y(), s.com.z(), s.roll, s.pitch, s.yaw, s.vx, s.yawRate, s.ay, s.com.z() - z0_,
@@ -138,7 +142,21 @@ void TelemetryWriter::formatRow(const Row& r) {
       s.alpha[0], s.alpha[1], s.alpha[2], s.alpha[3], s.Fy[0], s.Fy[1], s.Fy[2], s.Fy[3], s.kappa[2],
       s.kappa[3], s.ax, s.speed, in.throttle, in.brake, s.kappa[0], s.kappa[1], s.Fx[0], s.Fx[1], s.Fx[2],
       s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce};
-  char row[1536];
+  // The suspension and tyre channels, after the integer columns (appended
+  // later: the columns before them keep their places).
+  double corners[7 * 4 + 5] = {s.sideslip, s.rollRate, s.pitchRate, config::radToDeg(s.steerAngle[2]),
+                               config::radToDeg(s.steerAngle[3])};
+  for (int w = 0; w < 4; ++w) {
+    double* c = corners + 5 + w;
+    c[0] = config::radToDeg(s.camber[w]);
+    c[4] = config::radToDeg(s.toe[w]);
+    c[8] = s.travel[w];
+    c[12] = s.springForce[w];
+    c[16] = s.damperForce[w];
+    c[20] = s.stopForce[w];
+    c[24] = s.Mz[w];
+  }
+  char row[4096];
   char* p = row;
   char* const end = row + sizeof row;
   auto put = [&](std::to_chars_result r, char sep) {
@@ -150,7 +168,9 @@ void TelemetryWriter::formatRow(const Row& r) {
   put(std::to_chars(p, end, in.newtonIterations), ',');
   put(std::to_chars(p, end, in.newtonCorrection, std::chars_format::general, 4), ',');
   put(std::to_chars(p, end, in.segment), ',');
-  put(std::to_chars(p, end, in.fidelity), '\n');
+  put(std::to_chars(p, end, in.fidelity), ',');
+  for (double v : corners) put(std::to_chars(p, end, v, std::chars_format::general, 10), ',');
+  p[-1] = '\n';
   file_.append(row, static_cast<std::size_t>(p - row));
 }
 

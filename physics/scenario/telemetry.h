@@ -29,7 +29,7 @@ struct TelemetryInputs {
 };
 
 // Rows are formatted and written by a thread of the writer's own, so that
-// the stepping thread pays for a copy of the sample, not for 52 numbers
+// the stepping thread pays for a copy of the sample, not for 86 numbers
 // through to_chars (as much as a third of a step): write() queues the sample
 // and returns; the writer thread formats the rows in order and hands them to
 // a RowFile (row_file.h: whole rows, flushed at least every second). The

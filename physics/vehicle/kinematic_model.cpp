@@ -351,8 +351,13 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
   out.spec.bodies = specs;
   // Springs in the order the model holds them.
   out.spec.springs.clear();
+  L.springCorner.clear();
   for (int w = 0; w < 4; ++w)
-    for (int k : sw.corners[w].springs) out.spec.springs.push_back(link.spec.springs[k]);
+    for (int k : sw.corners[w].springs) {
+      out.spec.springs.push_back(link.spec.springs[k]);
+      L.springCorner.push_back(w);
+    }
+  L.wheelCentreAtDesign = LL.wheelCentreAtDesign;
   out.model = mbld.build();
   indexDerivedLayout(out, LL.rackAxisSign);
   return out;

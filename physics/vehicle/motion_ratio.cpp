@@ -87,6 +87,16 @@ std::vector<MotionRatio> motionRatios(const Vehicle& v) {
   return out;
 }
 
+void indexSuspensionChannels(Vehicle& v) {
+  mb::Data d = mb::makeData(v.model);
+  mb::updatePositions(v.model, designPositions(v), d);
+  const int ch = v.layout.chassis;
+  for (int w = 0; w < 4; ++w)
+    v.layout.wheelCentreAtDesign[w] = d.R[ch].transpose() * (d.p[v.layout.wheels[w].spindle] - d.p[ch]);
+  v.layout.springCorner.clear();
+  for (const MotionRatio& r : motionRatios(v)) v.layout.springCorner.push_back(r.wheel);
+}
+
 double roadWheelAnglePerSteer(const Vehicle& v) {
   const mb::Model& m = v.model;
   mb::MultibodyDae dae(m);

@@ -20,6 +20,10 @@ struct MotionRatio {
 
 std::vector<MotionRatio> motionRatios(const Vehicle& v);
 
+// Fills the layout's suspension channels of a linkage (VehicleLayout::
+// springCorner, wheelCentreAtDesign) from its design.
+void indexSuspensionChannels(Vehicle& v);
+
 // Mean road-wheel steer angle of the front wheels per unit normalised
 // steering input (rad), from the kinematics: assembled at small rack travels.
 double roadWheelAnglePerSteer(const Vehicle& v);

@@ -256,8 +256,15 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
   }
   outV.spec.bodies = specs;
   outV.spec.springs.clear();
+  L.springCorner.clear();  // the corner springs are PlanarLoads'
+  L.wheelCentreAtDesign = KL.wheelCentreAtDesign;
   outV.model = mbld.build();
   indexDerivedLayout(outV, KL.rackAxisSign);
+  {
+    mb::Data dd = mb::makeData(outV.model);
+    mb::updatePositions(outV.model, designPositions(outV), dd);
+    for (int w = 0; w < 4; ++w) loads.restTravel[w] = wheelCentreTravel(outV, dd, w);
+  }
   outV.planar = loads;
   out.sprungMass = kch.mass;
   out.sprungComHeight = sprungCom.z();

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "multibody/model_error.h"
+#include "vehicle/motion_ratio.h"
 
 namespace bdfcar::vehicle {
 
@@ -165,6 +166,7 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
     for (size_t k = i + 1; k < m.bodies.size(); ++k)
       if (m.bodies[k].parent == static_cast<int>(i)) add(m.bodies[k].inParent.origin);
   }
+  indexSuspensionChannels(out);
   return out;
 }
 
@@ -194,6 +196,12 @@ void indexDerivedLayout(Vehicle& v, double rackAxisSign) {
 void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x) {
   for (const mb::CutJoint& c : v.model.cutJoints)
     if (c.type == mb::CutJointType::Driver) q(v.model.bodies[c.drivenBody].qIndex + c.drivenCoordinate) = x;
+}
+
+double wheelCentreTravel(const Vehicle& v, const mb::Data& d, int w) {
+  const int ch = v.layout.chassis;
+  const Vec3 centre = d.R[ch].transpose() * (d.p[v.layout.wheels[w].spindle] - d.p[ch]);
+  return centre.z() - v.layout.wheelCentreAtDesign[w].z();
 }
 
 Eigen::VectorXd designPositions(const Vehicle& v) {

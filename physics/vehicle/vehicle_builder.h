@@ -6,6 +6,7 @@
 #include <array>
 #include <optional>
 
+#include "multibody/data.h"
 #include "multibody/model.h"
 #include "vehicle/vehicle_spec.h"
 
@@ -33,6 +34,11 @@ struct VehicleLayout {
   int rackDriverSlot = 0;
   std::array<WheelLayout, 4> wheels;  // FL, FR, RL, RR (the same order as VehicleSpec::wheels)
   std::vector<LinkDrawing> links;
+  // Suspension channels (telemetry): the corner each spring-damper moves
+  // with (-1: none, e.g. a bar between two wheels), and each wheel centre
+  // in the chassis frame at the linkage's design, from which travel counts.
+  std::vector<int> springCorner;
+  std::array<Vec3, 4> wheelCentreAtDesign{};
   int cutJointEquations = 0;   // rows from cut joints (without the rack driver)
   int spinCoordinates = 0;
 };
@@ -59,6 +65,7 @@ struct PlanarLoads {
   double wheelbase = 0;                // m
   double axisHeight = 0;               // m, roll and pitch axes above the ground
   Vec3 comInBase = Vec3::Zero();       // the vehicle's centre of mass in the base frame at rest
+  std::array<double, 4> restTravel{};  // m, wheelCentreTravel at rest (the base and body unrolled)
 };
 
 // A plain value: copies stay valid (the layout holds indices, no pointers).
@@ -84,6 +91,13 @@ void indexDerivedLayout(Vehicle& v, double rackAxisSign);
 // Sets the rack coordinate of q (and every coordinate a rack driver ties to
 // it: a kinematic model's steered corners) to x, m along the rack's axis.
 void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x);
+
+// Wheel w's centre along chassis z, relative to the chassis, minus its
+// place at the linkage's design (VehicleLayout::wheelCentreAtDesign), for
+// the positions of d: + bump. The telemetry's suspension travel; a planar
+// model's wheel does not compress its tyre, so its suspension takes only its
+// share of this (PlanarLoads::suspensionShare).
+double wheelCentreTravel(const Vehicle& v, const mb::Data& d, int w);
 
 // Positions at design with the chassis frame at (0, 0, designHeight) (a
 // planar model: its base at the origin of its plane, unrolled).

@@ -110,7 +110,9 @@ void VehicleForces::planarLoads(mb::Data& d) {
     const Eigen::Vector3d pb = mb::pointPosition(d, base, P.basePoint[w]);
     const double z = up.dot(ps - pb);
     const double zd = up.dot(mb::pointVelocity(d, sprung, P.sprungPoint[w]) - mb::pointVelocity(d, base, P.basePoint[w]));
-    const double f = -(P.rate[w] * z + P.damping[w] * zd);  // + pushes the body up and the tyre down
+    wheels_[w].cornerSpring = -P.rate[w] * z;
+    wheels_[w].cornerDamper = -P.damping[w] * zd;
+    const double f = wheels_[w].cornerSpring + wheels_[w].cornerDamper;  // + pushes the body up and the tyre down
     mb::addWorldForce(d, sprung, ps, f * up);
     mb::addWorldForce(d, base, pb, -f * up);
     wheels_[w].modelLoad = P.staticLoad[w] + f;

@@ -44,6 +44,7 @@ struct WheelContact {
   tyre::TyreOutput out;          // of the latest evaluation
   double spinRate = 0;           // absolute, rad/s (latest evaluation)
   double modelLoad = 0;          // N, a planar model's normal load (latest evaluation)
+  double cornerSpring = 0, cornerDamper = 0;  // N, a planar model's corner spring and damper at the wheel, + pushing the body up
   Eigen::Vector3d acceptedForce = Eigen::Vector3d::Zero();  // N, world: the tyre force at the last accepted step
   bool operator==(const WheelContact&) const = default;
 };

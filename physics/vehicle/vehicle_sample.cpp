@@ -40,6 +40,9 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   out.ax = ab.x();
   out.ay = ab.y();
   out.yawRate = d.vel[ch].tail<3>().z();
+  out.rollRate = d.vel[ch].tail<3>().x();
+  out.pitchRate = d.vel[ch].tail<3>().y();
+  out.sideslip = std::atan2(out.vy, out.vx);
   // Ground-plane component normal to the heading.
   Vec3 heading(R(0, 0), R(1, 0), 0.0);
   if (heading.norm() > 1e-9) {
@@ -60,6 +63,27 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     // Road-wheel steer: heading of the spin axis relative to the chassis, + = left.
     const Vec3 n = R.transpose() * d.R[v.layout.wheels[w].spindle].col(1);
     out.steerAngle[w] = std::atan2(-n.x(), n.y());
+    // Camber and toe by the SAE convention: + when the wheel's top leans
+    // out, + when its front points in (left is +y, right is -y).
+    const double outward = w % 2 == 0 ? 1.0 : -1.0;
+    out.camber[w] = -outward * std::asin(std::clamp(n.z(), -1.0, 1.0));
+    out.toe[w] = -outward * out.steerAngle[w];
+    out.Mz[w] = wc.out.Mz;
+    out.travel[w] = wheelCentreTravel(v, d, w);
+    if (v.planar) {
+      const PlanarLoads& P = *v.planar;
+      out.travel[w] = P.restTravel[w] + P.suspensionShare[w] * (out.travel[w] - P.restTravel[w]);
+      out.springForce[w] = wc.cornerSpring;
+      out.damperForce[w] = wc.cornerDamper;
+    }
+  }
+  for (size_t k = 0; k < m.springs.size(); ++k) {
+    const int w = k < v.layout.springCorner.size() ? v.layout.springCorner[k] : -1;
+    if (w < 0) continue;
+    const mb::SpringDamper::Parts p = m.springs[k].parts(d.springLength[k], d.springLengthRate[k]);
+    out.springForce[w] += p.spring;
+    out.damperForce[w] += p.damper;
+    out.stopForce[w] += p.stop;
   }
   // The rack's driver, and in a kinematic model the steered corners' rack
   // travel drivers too: together they carry the rack force.

@@ -30,6 +30,13 @@ struct VehicleSample {
   std::array<bool, 4> inContact{};
   std::array<double, 4> driveTorque{};
   double rackForce = 0;                 // driver constraint multiplier, N
+  // What an engineer reads off a corner (docs/TELEMETRY.md).
+  double sideslip = 0;                  // atan2(vy, vx), rad
+  double rollRate = 0, pitchRate = 0;   // chassis angular velocity about chassis x and y, rad/s
+  std::array<double, 4> Mz{};           // tyre aligning moment, N m (contact frame)
+  std::array<double, 4> camber{}, toe{};  // rad, relative to the chassis: + top out, + toe-in
+  std::array<double, 4> travel{};       // wheel centre along chassis z from its design place, m, + bump
+  std::array<double, 4> springForce{}, damperForce{}, stopForce{};  // N, the corner's suspension, + compressing
 };
 
 // Kinematics and forces of the accepted solution point.
