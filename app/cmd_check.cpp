@@ -46,8 +46,7 @@ int runCheck(const CheckArgs& a) {
   std::vector<scenario::CheckResult> results;
   int failed = 0;
   for (size_t i = 0; i < files.size() && !interruptRequested(); ++i) {
-    scenario::ScenarioSpec spec = scenario::loadScenarioFile(files[i]);
-    applyOverrides(a.overrides, spec);
+    scenario::ScenarioSpec spec = loadScenario(files[i], a.overrides);
     std::fprintf(stderr, "[%zu/%zu] %s ...\n", i + 1, files.size(), spec.name.c_str());
     results.push_back(scenario::checkScenario(spec));
     const scenario::CheckResult& r = results.back();

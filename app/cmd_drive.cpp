@@ -42,8 +42,7 @@ int runDrive(const DriveArgs& a) {
   std::string scenarioFile = a.scenario;
   if (replay && !a.scenarioGiven && !replay->scenarioFile.empty() && std::filesystem::is_regular_file(replay->scenarioFile))
     scenarioFile = replay->scenarioFile;
-  scenario::ScenarioSpec spec = scenario::loadScenarioFile(scenarioFile);
-  applyOverrides(a.overrides, spec);
+  scenario::ScenarioSpec spec = loadScenario(scenarioFile, a.overrides);
   if (replay && !a.replayAnyway) {
     const std::string why = replayMismatch(*replay, spec);
     if (!why.empty())

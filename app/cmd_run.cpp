@@ -31,8 +31,7 @@ void printStandardTest(const scenario::ScenarioSpec& spec, const scenario::Simul
 }
 
 int runRun(const std::string& path, const std::string& out, const std::string& metrics, const ScenarioOverrides& ov) {
-  scenario::ScenarioSpec spec = scenario::loadScenarioFile(path);
-  applyOverrides(ov, spec);
+  scenario::ScenarioSpec spec = loadScenario(path, ov);
   scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
   scenario::refuseOverwritingInputs(metrics, {path, spec.vehicleFile, spec.terrainFile, out});
   scenario::Simulation sim(spec);

@@ -82,8 +82,7 @@ double residentMegabytes() {
 }
 
 int runSoak(const SoakArgs& a) {
-  scenario::ScenarioSpec spec = scenario::loadScenarioFile(a.scenario);
-  applyOverrides(a.overrides, spec);
+  scenario::ScenarioSpec spec = loadScenario(a.scenario, a.overrides);
   spec.duration = a.seconds + 1.0;
   InterruptGuard interrupts;
   SessionOptions so;

@@ -1,10 +1,12 @@
 // Command-line options that override a scenario file: the integrator
-// settings of the paper's studies, the vehicle, the duration.
+// settings of the paper's studies, the vehicle, the duration, and any key of
+// the scenario or its vehicle (--set KEY=VALUE).
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scenario/scenario_spec.h"
 
@@ -15,10 +17,14 @@ struct ScenarioOverrides {
   std::optional<std::string> integrator, vehicle, fidelity;
   std::optional<int> order, newton, jacobianEvery;
   bool asPublished = false;  // the paper's Newton as published: no refresh when it stops contracting
+  std::vector<std::string> settings;  // --set KEY=VALUE, in the order given
 };
 
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov);
 // Applies the overrides; throws std::runtime_error on a bad combination.
 void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec);
+// Loads the scenario file with the --set settings, then applies the other
+// overrides; throws config::ConfigError or std::runtime_error.
+scenario::ScenarioSpec loadScenario(const std::string& path, const ScenarioOverrides& ov);
 
 }  // namespace bdfcar::app

@@ -33,8 +33,7 @@ struct RenderArgs {
 };
 
 int runRender(const RenderArgs& a) {
-  scenario::ScenarioSpec spec = scenario::loadScenarioFile(a.scenario);
-  applyOverrides(a.overrides, spec);
+  scenario::ScenarioSpec spec = loadScenario(a.scenario, a.overrides);
   FramesOptions fo;
   fo.outDir = a.outDir;
   fo.video = a.video;

@@ -24,6 +24,10 @@ int lineOf(const toml::value& v) {
   return static_cast<int>(loc.line());
 }
 
+// Values parsed from a --set option carry its text as their file name.
+constexpr std::string_view kSettingPrefix = "--set ";
+bool fromSetting(const std::string& file) { return file.rfind(kSettingPrefix, 0) == 0; }
+
 // What a value is, for "got ..." in messages: scalars by value (what the
 // reader typed), arrays by size, the rest by type.
 std::string describe(const toml::value& v) {
@@ -63,6 +67,14 @@ Table::Table(std::shared_ptr<const TomlDocument> doc, const void* value, std::st
 
 const std::string& Table::file() const { return doc_->path; }
 
+std::string Table::folderOf(const std::string& key) const {
+  const void* v = find(key);
+  const std::string file = v ? V(v).location().file_name() : doc_->path;
+  if (fromSetting(file)) return "";
+  if (file.empty() || file == "unknown file") return std::filesystem::path(doc_->path).parent_path().string();
+  return std::filesystem::path(file).parent_path().string();
+}
+
 std::string Table::dotted(const std::string& key) const { return context_.empty() ? key : context_ + "." + key; }
 
 int Table::line(const std::string& key) const {
@@ -71,10 +83,17 @@ int Table::line(const std::string& key) const {
   return lineOf(V(value_));
 }
 
+// "file:line: message", where the file is the one the value was written in
+// (an included file, or a --set option, which has no line).
 void Table::failAt(const void* value, const std::string& message) const {
-  const int ln = value ? lineOf(V(value)) : lineOf(V(value_));
+  const toml::value& at = value ? V(value) : V(value_);
+  std::string file = at.location().file_name();
+  if (file.empty() || file == "unknown file") file = doc_->path;
   std::ostringstream os;
-  os << doc_->path << ":" << ln << ": " << message;
+  if (fromSetting(file))
+    os << file << ": " << message;
+  else
+    os << file << ":" << lineOf(at) << ": " << message;
   throw ConfigError(os.str());
 }
 
@@ -511,14 +530,12 @@ void checkUtf8(const std::string& text, const std::string& path) {
 }
 
 // The whole document, or a ConfigError naming the line where the syntax breaks.
-Table parseText(const std::string& text, const std::string& path) {
+toml::value parseValue(const std::string& text, const std::string& path) {
   checkUtf8(text, path);
   checkNesting(text, path);
-  auto doc = std::make_shared<TomlDocument>();
-  doc->path = path;
   try {
     std::istringstream in(text);
-    doc->root = toml::parse(in, path);
+    return toml::parse(in, path);
   } catch (const toml::exception& e) {
     const auto& loc = e.location();
     std::string msg = e.what();
@@ -530,12 +547,193 @@ Table parseText(const std::string& text, const std::string& path) {
   } catch (const std::exception& e) {  // e.g. std::bad_alloc, std::out_of_range from inside the parser
     throw ConfigError(path + ":0: TOML file could not be parsed (" + std::string(e.what()) + ")");
   }
+}
+
+Table tableOf(toml::value root, const std::string& path) {
+  auto doc = std::make_shared<TomlDocument>();
+  doc->path = path;
+  doc->root = std::move(root);
   return Table(doc, &doc->root, "");
+}
+
+Table parseText(const std::string& text, const std::string& path) { return tableOf(parseValue(text, path), path); }
+
+[[noreturn]] void failAtValue(const toml::value& v, const std::string& message) {
+  throw ConfigError(v.location().file_name() + ":" + std::to_string(lineOf(v)) + ": " + message);
+}
+
+// Adds to `top` what `under` has and `top` does not, table by table.
+void mergeUnder(toml::value& top, const toml::value& under) {
+  if (!top.is_table() || !under.is_table()) return;
+  toml::table& t = top.as_table();
+  for (const auto& [key, value] : under.as_table()) {
+    const auto it = t.find(key);
+    if (it == t.end())
+      t.emplace(key, value);
+    else
+      mergeUnder(it->second, value);
+  }
+}
+
+constexpr std::size_t kMaxIncludeDepth = 8;
+
+// A file with its includes merged under it; `chain` holds the files
+// including it (to refuse cycles).
+toml::value loadWithIncludes(const std::string& path, std::vector<std::string>& chain) {
+  toml::value root = parseValue(readWholeFile(path), path);
+  if (!root.is_table() || !root.as_table().count("include")) return root;
+  const toml::value include = root.as_table().at("include");
+  std::vector<std::string> names;
+  const std::string expected = "key 'include': expected a file name or an array of file names, got ";
+  if (include.is_string()) {
+    names.push_back(include.as_string().str);
+  } else if (include.is_array()) {
+    for (const toml::value& n : include.as_array()) {
+      if (!n.is_string()) failAtValue(include, expected + describe(n) + " in the array");
+      names.push_back(n.as_string().str);
+    }
+  } else {
+    failAtValue(include, expected + describe(include));
+  }
+  root.as_table().erase("include");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  // The later of two includes wins: merge from the last.
+  for (auto n = names.rbegin(); n != names.rend(); ++n) {
+    if (n->empty()) failAtValue(include, "key 'include': expected a file name, got \"\"");
+    const std::filesystem::path p = std::filesystem::path(*n).is_absolute() ? std::filesystem::path(*n)
+                                                                           : (folder / *n).lexically_normal();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(p, ec))
+      failAtValue(include, "key 'include': the file '" + p.string() + "' does not exist or is not a regular file");
+    const std::string canonical = std::filesystem::weakly_canonical(p, ec).string();
+    if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
+      failAtValue(include, "key 'include': '" + p.string() + "' includes itself (through " +
+                               std::to_string(chain.size()) + " files)");
+    if (chain.size() >= kMaxIncludeDepth)
+      failAtValue(include, "key 'include': includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files");
+    chain.push_back(canonical);
+    const toml::value under = loadWithIncludes(p.string(), chain);
+    chain.pop_back();
+    mergeUnder(root, under);
+  }
+  return root;
+}
+
+// "springs[2].damping" -> {"springs", 2, "damping"}: names and indices.
+struct PathStep {
+  std::string name;
+  long index = -1;  // >= 0: an element of the array `name`
+};
+
+std::vector<PathStep> splitKeyPath(const Setting& s) {
+  std::vector<PathStep> steps;
+  std::string_view k = s.key;
+  auto bad = [&](const std::string& why) -> std::vector<PathStep> {
+    throw ConfigError(s.origin() + ": " + why + " (a key path is names joined by dots, with [N] for the N-th "
+                                                "element of an array: springs[0].damping)");
+  };
+  while (!k.empty()) {
+    const std::size_t end = k.find_first_of(".[");
+    PathStep step{std::string(k.substr(0, end))};
+    if (step.name.empty()) return bad("an empty name in the key '" + s.key + "'");
+    k = end == std::string_view::npos ? std::string_view() : k.substr(end);
+    if (!k.empty() && k.front() == '[') {
+      const std::size_t close = k.find(']');
+      if (close == std::string_view::npos) return bad("no ']' in the key '" + s.key + "'");
+      const std::string digits(k.substr(1, close - 1));
+      if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return bad("'[" + digits + "]' is not an array index");
+      step.index = std::stol(digits);
+      k = k.substr(close + 1);
+    }
+    steps.push_back(step);
+    if (!k.empty()) {
+      if (k.front() != '.') return bad("expected '.' after ']' in the key '" + s.key + "'");
+      k = k.substr(1);
+      if (k.empty()) return bad("the key '" + s.key + "' ends with '.'");
+    }
+  }
+  if (steps.empty()) return bad("no key");
+  return steps;
+}
+
+// The setting's value: TOML when it parses as a value, a string otherwise.
+toml::value settingValue(const Setting& s) {
+  const std::string name = s.origin();
+  try {
+    checkUtf8(s.value, name);
+    checkNesting(s.value, name);
+    std::istringstream in("value = " + s.value + "\n");
+    toml::value doc = toml::parse(in, name);
+    return doc.as_table().at("value");
+  } catch (const ConfigError&) {
+    throw;
+  } catch (const std::exception&) {
+    // Not a TOML value: the text itself, as a string (located at the option).
+    std::istringstream in("value = " + toml::format(toml::value(s.value)) + "\n");
+    return toml::parse(in, name).as_table().at("value");
+  }
+}
+
+void applySetting(toml::value& root, const Setting& s) {
+  const std::vector<PathStep> steps = splitKeyPath(s);
+  toml::value* at = &root;
+  std::string walked;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const PathStep& step = steps[i];
+    const bool last = i + 1 == steps.size();
+    if (!at->is_table())
+      throw ConfigError(s.origin() + ": '" + walked + "' is " + describe(*at) + ", not a table with keys");
+    toml::table& t = at->as_table();
+    walked += (walked.empty() ? "" : ".") + step.name;
+    if (step.index < 0) {
+      if (last) {
+        t[step.name] = settingValue(s);
+        return;
+      }
+      at = &t[step.name];  // a new table when absent
+      if (at->is_uninitialized()) *at = toml::table{};
+      continue;
+    }
+    const auto it = t.find(step.name);
+    if (it == t.end() || !it->second.is_array())
+      throw ConfigError(s.origin() + ": '" + walked + "' is not an array in the file, so it has no element [" +
+                        std::to_string(step.index) + "]");
+    toml::array& a = it->second.as_array();
+    if (static_cast<std::size_t>(step.index) >= a.size())
+      throw ConfigError(s.origin() + ": '" + walked + "' has " + std::to_string(a.size()) + " elements, so no [" +
+                        std::to_string(step.index) + "]");
+    walked += "[" + std::to_string(step.index) + "]";
+    if (last) {
+      a[static_cast<std::size_t>(step.index)] = settingValue(s);
+      return;
+    }
+    at = &a[static_cast<std::size_t>(step.index)];
+  }
 }
 
 }  // namespace
 
-Table parseTomlFile(const std::string& path) { return parseText(readWholeFile(path), path); }
+Setting parseSetting(const std::string& keyEqualsValue) {
+  const std::size_t eq = keyEqualsValue.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw ConfigError("--set " + keyEqualsValue + ": expected KEY=VALUE (e.g. --set start.speed=\"80 km/h\")");
+  Setting s{keyEqualsValue.substr(0, eq), keyEqualsValue.substr(eq + 1), ""};
+  // Spaces around '=' are the shell's quoting, not part of the key.
+  while (!s.key.empty() && s.key.back() == ' ') s.key.pop_back();
+  while (!s.value.empty() && s.value.front() == ' ') s.value.erase(0, 1);
+  if (s.key.empty()) throw ConfigError("--set " + keyEqualsValue + ": expected KEY=VALUE, got no key");
+  splitKeyPath(s);  // checks the key's form now
+  return s;
+}
+
+Table parseTomlFile(const std::string& path, const std::vector<Setting>& settings) {
+  std::error_code ec;
+  std::vector<std::string> chain{std::filesystem::weakly_canonical(path, ec).string()};
+  toml::value root = loadWithIncludes(path, chain);
+  for (const Setting& s : settings) applySetting(root, s);
+  return tableOf(std::move(root), path);
+}
 
 Table parseTomlText(const std::string& text, const std::string& fileName) { return parseText(text, fileName); }
 

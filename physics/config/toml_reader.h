@@ -104,7 +104,11 @@ class Table {
 
   const std::string& context() const { return context_; }  // e.g. "bodies[3]", "axes.steering"
   std::string dotted(const std::string& key) const;        // context.key, or key at the top
-  const std::string& file() const;
+  const std::string& file() const;                          // the document's (the top file's) path
+  // The folder a relative path in `key`'s value is relative to: that of the
+  // file the value was written in (an included file's own folder), or the
+  // working directory for a command-line setting (empty).
+  std::string folderOf(const std::string& key) const;
   int line(const std::string& key = "") const;
 
   Table(std::shared_ptr<const TomlDocument> doc, const void* value, std::string context);
@@ -122,10 +126,31 @@ class Table {
   std::shared_ptr<std::set<std::string>> used_;
 };
 
+// A command-line override of one key (`--set KEY=VALUE`): a key path of
+// dotted names and array indices ("springs[2].damping", "start.speed") and a
+// TOML value ("80", "\"80 km/h\"", "[1, 2]"); a value that is not TOML (a
+// bare word: planar, 80 km/h) is taken as a string. Messages about the value
+// name it as its file: "--set start.speed=80 km/h: key 'start.speed': ...".
+struct Setting {
+  std::string key, value;
+  std::string written;  // the option as given, when the key was taken from a longer one ("vehicle.KEY")
+  std::string origin() const { return "--set " + (written.empty() ? key + "=" + value : written); }
+};
+// Splits "KEY=VALUE"; throws ConfigError when there is no '=' or no key.
+Setting parseSetting(const std::string& keyEqualsValue);
+
 // Parses a file (read whole, so pipes work too); throws ConfigError (with the
 // line) on syntax errors, nesting deeper than 64 arrays / inline tables, or
 // when the file cannot be read (missing, a directory, over 16 MiB).
-Table parseTomlFile(const std::string& path);
+//
+// A file may include others: `include = "shared.toml"` or an array of names,
+// at the top, relative to the including file. Their tables are merged under
+// the including file's: a key the including file writes wins (tables merge
+// key by key, any other value, arrays too, is replaced whole), and of two
+// included files the later wins. Includes nest (8 deep at most, no cycles).
+// Every value keeps the file and line it was written at, for messages.
+// The settings are applied last, over everything.
+Table parseTomlFile(const std::string& path, const std::vector<Setting>& settings = {});
 // Parses TOML text read elsewhere; `fileName` is what messages call it.
 Table parseTomlText(const std::string& text, const std::string& fileName);
 

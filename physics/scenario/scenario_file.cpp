@@ -31,13 +31,12 @@ const Range kGain{0.0, 1e6};                       // speed-hold gains
 const Range kLookAheadTime{0.0, 100.0, true, false};  // s
 const Range kLookAhead{0.0, 1e3, true, false};        // m
 
-// A file the scenario names, relative to the scenario: it must be a regular
+// A file the scenario names, relative to the file that names it: it must be a regular
 // file (an empty name or a folder would be read as one).
-std::string resolveAsset(Table& t, const std::string& key, const std::string& scenarioFile) {
+std::string resolveAsset(Table& t, const std::string& key) {
   const std::filesystem::path rel = t.string(key);
   if (rel.empty()) t.fail("expected a file name, got \"\"", key);
-  const std::filesystem::path p =
-      rel.is_absolute() ? rel : (std::filesystem::path(scenarioFile).parent_path() / rel).lexically_normal();
+  const std::filesystem::path p = rel.is_absolute() ? rel : (std::filesystem::path(t.folderOf(key)) / rel).lexically_normal();
   std::error_code ec;  // no exceptions: a name too long or unreadable is "does not exist"
   const auto status = std::filesystem::status(p, ec);
   if (ec || !std::filesystem::exists(status)) t.fail("the file '" + p.string() + "' does not exist", key);
@@ -160,14 +159,21 @@ int stepsPerTick(double tick, double step) {
   return n >= 1 && n <= 1e6 && std::abs(n * step - tick) <= 1e-9 * tick ? static_cast<int>(n) : 0;
 }
 
-ScenarioSpec loadScenarioFile(const std::string& path) {
-  Table root = config::parseTomlFile(path);
+ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config::Setting>& settings) {
+  std::vector<config::Setting> own;
   ScenarioSpec s;
+  for (const config::Setting& x : settings) {
+    if (x.key.rfind("vehicle.", 0) == 0)
+      s.vehicleSettings.push_back({x.key.substr(8), x.value, x.key + "=" + x.value});
+    else
+      own.push_back(x);
+  }
+  Table root = config::parseTomlFile(path, own);
   s.sourceFile = path;
   Table sc = root.table("scenario");
   s.name = sc.string("name");
-  s.vehicleFile = resolveAsset(sc, "vehicle", path);
-  if (sc.has("terrain")) s.terrainFile = resolveAsset(sc, "terrain", path);
+  s.vehicleFile = resolveAsset(sc, "vehicle");
+  if (sc.has("terrain")) s.terrainFile = resolveAsset(sc, "terrain");
   s.duration = sc.number("duration", Dimension::Time, kDuration);
   s.outputInterval = sc.number("output_interval", Dimension::Time, kOutputInterval, s.outputInterval);
   s.tick = sc.number("tick", Dimension::Time, kTick, s.tick);

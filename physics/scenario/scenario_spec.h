@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "config/toml_reader.h"
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
 #include "vehicle/vehicle_builder.h"
@@ -100,6 +101,7 @@ enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell };
 struct ScenarioSpec {
   std::string name, sourceFile;
   std::string vehicleFile, terrainFile;  // resolved paths; terrainFile empty = flat plane z = 0
+  std::vector<config::Setting> vehicleSettings;  // --set vehicle.KEY=VALUE: over the vehicle file
   double duration = 4.0;       // manoeuvre time, s
   double initialSpeed = 0;     // m/s
   double settleTime = 0;       // s of straight running before tau = 0 (not recorded)
@@ -128,8 +130,10 @@ bool parseFidelity(const std::string& name, FidelitySpec& out);
 int stepsPerTick(double tick, double step);
 
 // Loads a scenario file; throws config::ConfigError with file:line; the
-// vehicle and terrain paths are resolved relative to the scenario file and
-// must exist.
-ScenarioSpec loadScenarioFile(const std::string& path);
+// vehicle and terrain paths are resolved relative to the file that names
+// them and must exist. Settings (--set KEY=VALUE) apply over the file; those
+// whose key starts with "vehicle." apply to the vehicle file (without the
+// prefix) when the vehicle is loaded (ScenarioSpec::vehicleSettings).
+ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config::Setting>& settings = {});
 
 }  // namespace bdfcar::scenario

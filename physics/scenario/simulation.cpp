@@ -75,7 +75,7 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   if (w->stepsPerTick == 0)
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
-  w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile));
+  w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile, spec.vehicleSettings));
   const scenario::AutoRungs automatic = autoRungs(spec.fidelity.errorBudget);
   const vehicle::Fidelity rung = spec.fidelity.automatic ? automatic.full : spec.fidelity.suspension;
   // A derived model names the vehicle file and the rung the scenario asked for.

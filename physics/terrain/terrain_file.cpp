@@ -30,10 +30,10 @@ void readPlane(Table t, TerrainData& data) {
   data.planeNormal = normal.normalized();
 }
 
-// Triangles of the OBJ file named relative to the .toml, moved by `offset`.
-void readMesh(Table t, const std::string& tomlPath, TerrainData& data) {
+// Triangles of the OBJ file named relative to the file naming it, moved by `offset`.
+void readMesh(Table t, TerrainData& data) {
   t.rejectUnknownKeys({"obj", "offset"});
-  const std::filesystem::path objPath = std::filesystem::path(tomlPath).parent_path() / t.string("obj");
+  const std::filesystem::path objPath = std::filesystem::path(t.folderOf("obj")) / t.string("obj");
   std::error_code ec;
   if (!std::filesystem::is_regular_file(objPath, ec))
     t.fail("names OBJ file '" + objPath.string() + "', which does not exist", "obj");
@@ -105,13 +105,13 @@ std::vector<std::string_view> knownTopLevelKeys(const std::string& kind) {
 }
 
 // The surface of the declared kind into data.
-void readSurface(Table& top, const std::string& kind, const std::string& tomlPath, TerrainData& data) {
+void readSurface(Table& top, const std::string& kind, TerrainData& data) {
   if (kind == "plane") {
     data.kind = TerrainKind::Plane;
     if (top.has("plane")) readPlane(top.table("plane"), data);
   } else if (kind == "mesh") {
     data.kind = TerrainKind::Mesh;
-    readMesh(top.table("mesh"), tomlPath, data);
+    readMesh(top.table("mesh"), data);
   } else if (kind == "heightfield") {
     data.kind = TerrainKind::Heightfield;
     readHeightfield(top.table("heightfield"), data);
@@ -137,7 +137,7 @@ TerrainData readTerrain(const std::string& tomlPath) {
   data.friction = top.numberIn("friction", kFriction);
   for (Table& t : top.optionalTables("friction_patches")) data.frictionPatches.push_back(readFrictionPatch(t));
   if (top.has("markings")) data.road = readMarkings(top.table("markings"));
-  readSurface(top, kind, tomlPath, data);
+  readSurface(top, kind, data);
   return data;
 }
 

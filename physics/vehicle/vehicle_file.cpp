@@ -55,7 +55,10 @@ std::vector<Side> sidesOf(Table& t) {
 
 class Loader {
  public:
-  explicit Loader(const std::string& path) : root_(config::parseTomlFile(path)) { spec_.sourceFile = path; }
+  Loader(const std::string& path, const std::vector<config::Setting>& settings)
+      : root_(config::parseTomlFile(path, settings)) {
+    spec_.sourceFile = path;
+  }
   VehicleSpec load();
 
  private:
@@ -440,7 +443,7 @@ void Loader::readAppearance() {
     if (a->has("body_mesh")) {
       const std::filesystem::path mesh = a->string("body_mesh");
       g.bodyMesh = mesh.is_absolute() ? mesh.string()
-                                      : (std::filesystem::path(spec_.sourceFile).parent_path() / mesh).lexically_normal().string();
+                                      : (std::filesystem::path(a->folderOf("body_mesh")) / mesh).lexically_normal().string();
       std::error_code ec;
       if (!std::filesystem::is_regular_file(g.bodyMesh, ec))
         a->fail("the file '" + g.bodyMesh + "' does not exist or is not a regular file", "body_mesh");
@@ -485,6 +488,8 @@ VehicleSpec Loader::load() {
 
 }  // namespace
 
-VehicleSpec loadVehicleFile(const std::string& path) { return Loader(path).load(); }
+VehicleSpec loadVehicleFile(const std::string& path, const std::vector<config::Setting>& settings) {
+  return Loader(path, settings).load();
+}
 
 }  // namespace bdfcar::vehicle

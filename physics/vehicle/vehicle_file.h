@@ -5,11 +5,14 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "config/toml_reader.h"
 #include "vehicle/vehicle_spec.h"
 
 namespace bdfcar::vehicle {
 
-VehicleSpec loadVehicleFile(const std::string& path);
+// `settings` (--set) apply over the file (config::parseTomlFile).
+VehicleSpec loadVehicleFile(const std::string& path, const std::vector<config::Setting>& settings = {});
 
 }  // namespace bdfcar::vehicle
