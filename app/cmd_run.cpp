@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
+#include "scenario/run_metrics.h"
 #include "scenario/standard_tests.h"
 #include "scenario_overrides.h"
 
@@ -17,17 +18,24 @@ namespace bdfcar::app {
 
 namespace {
 
-// A standard test's metrics from the run's samples.
-void printStandardTest(const scenario::ScenarioSpec& spec, const scenario::Simulation& sim,
-                       const scenario::RunResult& r, const std::string& metricsPath) {
-  const scenario::StandardTestReport report = scenario::standardTestReport(
-      spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
-  std::printf("%s", report.text.c_str());
-  if (!metricsPath.empty()) {
-    scenario::RowFile f(metricsPath);
-    f.append(report.json);
-    f.close();
+// The run's metrics (run_metrics.h), with its standard test's when it has
+// one: printed, and written to metricsPath as CSV (a .csv name) or JSON.
+void reportMetrics(const scenario::ScenarioSpec& spec, const scenario::Simulation& sim, const scenario::RunResult& r,
+                   const std::string& metricsPath) {
+  std::vector<scenario::Metric> metrics = scenario::runMetrics(r);
+  std::string json;
+  if (spec.standardTest != scenario::StandardTest::None) {
+    const scenario::StandardTestReport report = scenario::standardTestReport(
+        spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
+    std::printf("%s", report.text.c_str());
+    metrics.insert(metrics.end(), report.metrics.begin(), report.metrics.end());
+    json = report.json;  // the test's own structure (docs/STANDARD_TESTS.md)
   }
+  if (metricsPath.empty()) return;
+  const bool csv = metricsPath.size() > 4 && metricsPath.compare(metricsPath.size() - 4, 4, ".csv") == 0;
+  scenario::RowFile f(metricsPath);
+  f.append(csv ? scenario::metricsCsv(metrics) : json.empty() ? scenario::metricsJson(metrics) : json);
+  f.close();
 }
 
 int runRun(const std::string& path, const std::string& out, const std::string& metrics, const ScenarioOverrides& ov) {
@@ -38,8 +46,8 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   InterruptGuard interrupts;
   scenario::RunOptions opt;
   opt.telemetryPath = out;
-  // A standard test's metrics need the whole time history.
-  opt.keepSamples = spec.standardTest != scenario::StandardTest::None;
+  // Metrics need the whole time history.
+  opt.keepSamples = spec.standardTest != scenario::StandardTest::None || !metrics.empty();
   opt.stopRequested = &interruptRequested();
   // Without a telemetry file (and no course to judge) nothing is sampled:
   // the printed time per step is then the step alone.
@@ -47,6 +55,8 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   const scenario::RunResult r = scenario::runScenario(sim, opt);
   if (!r.ok) {
     std::fprintf(stderr, "error: %s: the run failed at t = %.3f s: %s\n", path.c_str(), r.failureTime, r.failure.c_str());
+    // A sweep's summary keeps the failed case (ok = 0) with what it reached.
+    if (!metrics.empty()) reportMetrics(spec, sim, r, metrics);
     return 3;
   }
   const auto& c = r.counters;
@@ -62,7 +72,8 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
     std::printf("fidelity auto: %ld switch%s; steps on the linkage %ld, kinematic %ld, planar %ld\n", r.fidelitySwitches,
                 r.fidelitySwitches == 1 ? "" : "es", r.stepsPerModel[0], r.stepsPerModel[1], r.stepsPerModel[2]);
   }
-  if (spec.standardTest != scenario::StandardTest::None && !r.interrupted) printStandardTest(spec, sim, r, metrics);
+  if ((spec.standardTest != scenario::StandardTest::None || !metrics.empty()) && !r.interrupted)
+    reportMetrics(spec, sim, r, metrics);
   if (r.course) {
     const auto& cr = *r.course;
     std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
@@ -89,7 +100,8 @@ void addRunCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--out,-o", *out, "Telemetry CSV to write (without it the steps alone are timed)");
   auto metrics = std::make_shared<std::string>();
   cmd->add_option("--metrics", *metrics,
-                  "With a standard test ([metrics] test in the scenario): also write its metrics as JSON here");
+                  "Write the run's metrics here (docs/STANDARD_TESTS.md): peaks, final speed, the course's verdict, "
+                  "and a standard test's metrics ([metrics] test); CSV when the name ends in .csv, else JSON");
   addOverrideOptions(*cmd, *ov);
   commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *metrics, *ov); }); }});
 }

@@ -17,6 +17,7 @@ using CommandList = std::vector<Command>;
 void addVersionCommand(CLI::App& app, CommandList& commands);
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
+void addSweepCommand(CLI::App& app, CommandList& commands);
 void addReportCommand(CLI::App& app, CommandList& commands);
 void addSoakCommand(CLI::App& app, CommandList& commands);
 void addCheckCommand(CLI::App& app, CommandList& commands);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -118,7 +119,37 @@ void Table::reject(const std::string& key, const std::string& expectation, int e
   failValue(v, key, expectation);
 }
 
+namespace {
+std::set<std::pair<std::string, std::string>>* keyLog = nullptr;
+
+// "bodies[3].joint" -> "bodies[].joint"
+std::string withoutIndices(const std::string& dotted) {
+  std::string out;
+  for (std::size_t i = 0; i < dotted.size(); ++i) {
+    out += dotted[i];
+    if (dotted[i] == '[') {
+      while (i + 1 < dotted.size() && dotted[i + 1] != ']') ++i;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+void startKeyLog() {
+  delete keyLog;
+  keyLog = new std::set<std::pair<std::string, std::string>>();
+}
+
+std::set<std::pair<std::string, std::string>> stopKeyLog() {
+  std::set<std::pair<std::string, std::string>> out;
+  if (keyLog) out.swap(*keyLog);
+  delete keyLog;
+  keyLog = nullptr;
+  return out;
+}
+
 const void* Table::find(const std::string& key) const {
+  if (keyLog) keyLog->emplace(doc_->path, withoutIndices(dotted(key)));
   const toml::value& t = V(value_);
   if (!t.is_table()) return nullptr;
   const auto& tab = t.as_table();
@@ -127,6 +158,30 @@ const void* Table::find(const std::string& key) const {
 }
 
 bool Table::has(const std::string& key) const { return find(key) != nullptr; }
+
+std::vector<std::string> Table::scalarTexts(const std::string& key) {
+  const std::string exp = "an array of numbers, strings or booleans";
+  const void* v = get(key, exp);
+  if (!V(v).is_array() || V(v).as_array().empty()) failValue(v, key, "a non-empty " + exp.substr(3));
+  std::vector<std::string> out;
+  int i = 0;
+  for (const toml::value& e : V(v).as_array()) {
+    if (isNumber(e)) {
+      if (!std::isfinite(asNumber(e))) reject(key, "finite numbers", i);
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", e.is_integer() ? 0.0 : e.as_floating());
+      out.push_back(e.is_integer() ? std::to_string(e.as_integer()) : std::string(text));
+    } else if (e.is_string()) {
+      out.push_back(toml::format(e));
+    } else if (e.is_boolean()) {
+      out.push_back(e.as_boolean() ? "true" : "false");
+    } else {
+      reject(key, exp, i);
+    }
+    ++i;
+  }
+  return out;
+}
 bool Table::isString(const std::string& key) const { const void* v = find(key); return v && V(v).is_string(); }
 bool Table::isArray(const std::string& key) const { const void* v = find(key); return v && V(v).is_array(); }
 bool Table::isTable(const std::string& key) const { const void* v = find(key); return v && V(v).is_table(); }
@@ -422,6 +477,8 @@ void Table::finish() const {
 }
 
 void Table::rejectUnknownKeys(const std::vector<std::string_view>& known) const {
+  if (keyLog)
+    for (std::string_view k : known) keyLog->emplace(doc_->path, withoutIndices(dotted(std::string(k))));
   failFirstUnknown(known, "; expected one of: " + listed(known, false));
 }
 

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -83,6 +84,10 @@ class Table {
   // finite numbers and all as long as the first (a grid of samples).
   std::vector<std::vector<double>> grid(const std::string& key, std::size_t minRows, std::size_t minColumns);
 
+  // Each element of an array of numbers, strings or booleans as TOML text
+  // (what a Setting's value takes): 30000, "80 km/h", true.
+  std::vector<std::string> scalarTexts(const std::string& key);
+
   bool has(const std::string& key) const;
   bool isString(const std::string& key) const;
   bool isArray(const std::string& key) const;
@@ -138,6 +143,13 @@ struct Setting {
 };
 // Splits "KEY=VALUE"; throws ConfigError when there is no '=' or no key.
 Setting parseSetting(const std::string& keyEqualsValue);
+
+// The key log, for the test that every key a reader looks up is documented
+// (docs/SCENARIOS.md, docs/VEHICLES.md): while on, every key a Table looks up,
+// present or not, is recorded as its dotted path with array indices dropped
+// ("bodies[].mass"), under the document's path. Off by default (no cost).
+void startKeyLog();
+std::set<std::pair<std::string, std::string>> stopKeyLog();  // (document path, key)
 
 // Parses a file (read whole, so pipes work too); throws ConfigError (with the
 // line) on syntax errors, nesting deeper than 64 arrays / inline tables, or

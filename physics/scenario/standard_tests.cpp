@@ -169,10 +169,30 @@ StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h) {
   StandardTestReport r;
   if (test == StandardTest::Iso7401StepSteer) {
     const StepSteerMetrics m = iso7401StepSteer(h);
-    r = {m.valid, describe(m), toJson(m)};
+    r = {m.valid, describe(m), toJson(m), {{"iso7401_valid", m.valid ? 1.0 : 0.0}}};
+    if (m.valid) {
+      r.metrics.push_back({"iso7401_steer_step_deg", m.steerStep});
+      r.metrics.push_back({"iso7401_t50_s", m.t50});
+      for (const auto& [name, x] : {std::pair{"yaw_rate", &m.yawRate}, std::pair{"ay", &m.ay}}) {
+        const std::string p = std::string("iso7401_") + name;
+        r.metrics.push_back({p + "_steady", x->steady});
+        r.metrics.push_back({p + "_gain", x->gain});
+        r.metrics.push_back({p + "_response_time_s", x->responseTime});
+        r.metrics.push_back({p + "_peak_response_time_s", x->peakTime});
+        r.metrics.push_back({p + "_overshoot", x->overshoot});
+      }
+    }
   } else if (test == StandardTest::Fmvss126SineWithDwell) {
     const SineWithDwellMetrics m = fmvss126SineWithDwell(h);
-    r = {m.valid, describe(m), toJson(m)};
+    r = {m.valid, describe(m), toJson(m), {{"fmvss126_valid", m.valid ? 1.0 : 0.0}}};
+    if (m.valid)
+      r.metrics.insert(r.metrics.end(), {{"fmvss126_begin_of_steer_s", m.beginOfSteer},
+                                         {"fmvss126_completion_of_steer_s", m.completionOfSteer},
+                                         {"fmvss126_peak_yaw_rate_radps", m.peakYawRate},
+                                         {"fmvss126_yaw_ratio_1000_pct", m.yawRatio1000},
+                                         {"fmvss126_yaw_ratio_1750_pct", m.yawRatio1750},
+                                         {"fmvss126_lateral_displacement_m", m.lateralDisplacement},
+                                         {"fmvss126_pass", m.passYaw1000 && m.passYaw1750 && m.passDisplacement ? 1.0 : 0.0}});
   }
   return r;
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "scenario/run.h"
+#include "scenario/run_metrics.h"
 #include "scenario/scenario_spec.h"
 
 namespace bdfcar::scenario {
@@ -75,6 +76,7 @@ TimeHistory timeHistory(const RunResult& r, double steeringWheelFull);
 struct StandardTestReport {
   bool valid = false;
   std::string text, json;
+  std::vector<Metric> metrics;  // flat, prefixed by the test (iso7401_..., fmvss126_...); a verdict is 1 or 0
 };
 StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h);
 
