@@ -26,7 +26,7 @@ void reportMetrics(const scenario::ScenarioSpec& spec, const scenario::Simulatio
   std::string json;
   if (spec.standardTest != scenario::StandardTest::None) {
     const scenario::StandardTestReport report = scenario::standardTestReport(
-        spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
+        spec.standardTest, scenario::timeHistory(r, sim.vehicle()));
     std::printf("%s", report.text.c_str());
     metrics.insert(metrics.end(), report.metrics.begin(), report.metrics.end());
     json = report.json;  // the test's own structure (docs/STANDARD_TESTS.md)
@@ -76,8 +76,8 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
     reportMetrics(spec, sim, r, metrics);
   if (r.course) {
     const auto& cr = *r.course;
-    std::printf("ISO 3888-1 course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
-                cr.passed ? "passed" : "FAILED", cr.coneHits, cr.coneHits == 1 ? "" : "s", cr.peakLateralAcceleration,
+    std::printf("ISO 3888-%d course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
+                sim.course()->part, cr.passed ? "passed" : "FAILED", cr.coneHits, cr.coneHits == 1 ? "" : "s", cr.peakLateralAcceleration,
                 cr.peakLateralAcceleration / 9.81, cr.exitTime < 0 ? " (course not completed)" : "");
     if (!r.interrupted) return cr.passed && cr.exitTime >= 0 ? 0 : 4;
   }

@@ -44,7 +44,7 @@ int finishDemo(DriveSession& session, const DemoOptions& o) {
     const bool done = c->exitTime >= 0;
     std::printf("ISO 3888-1 double lane change at %.0f km/h: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 "
                 "(%.2f g)%s\n",
-                session.spec().speedControl.target * 3.6, c->passed && done ? "PASSED" : "FAILED", c->coneHits,
+                session.spec().speedControl.profile.target * 3.6, c->passed && done ? "PASSED" : "FAILED", c->coneHits,
                 c->coneHits == 1 ? "" : "s", c->peakLateralAcceleration, c->peakLateralAcceleration / 9.81,
                 done ? "" : " (course not completed)");
     return c->passed && done ? 0 : 4;

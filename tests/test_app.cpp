@@ -104,7 +104,7 @@ TEST(Input, SteeringTheWheelLeftTurnsTheCarLeft) {
 
 TEST(PathFollower, PassesTheIsoDoubleLaneChangeAt60WithTheReferenceSedan) {
   const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/iso_lane_change.toml"));
-  ASSERT_NEAR(spec.speedControl.target, 60 / 3.6, 1e-9);
+  ASSERT_NEAR(spec.speedControl.profile.target, 60 / 3.6, 1e-9);
   scenario::Simulation sim(spec);
   const scenario::RunResult r = scenario::runScenario(sim, {});
   ASSERT_TRUE(r.ok) << r.failure;

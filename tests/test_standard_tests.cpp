@@ -6,6 +6,7 @@
 // lateral path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "scenario/standard_tests.h"
@@ -109,6 +110,45 @@ TEST(Fmvss126, SineWithDwellGivesItsClosedFormRatiosAndDisplacement) {
   EXPECT_FALSE(slow.passDisplacement);
 }
 
+// ISO 4138 on a linear single-track car held at a constant road-wheel angle
+// delta while its speed rises: r = v delta / (L + K v^2) with the understeer
+// gradient K, so L / R = delta - K a_y exactly; sideslip and roll given as
+// straight lines in a_y. The metrics must return K and the two slopes.
+TEST(Iso4138, SingleTrackCarGivesItsUndersteerGradient) {
+  const double deg = 180 / M_PI, L = 2.6, delta = 0.06;
+  const double U = 2.5;                  // deg/g
+  const double K = U / deg / 9.81;       // rad per m/s^2
+  TimeHistory h;
+  h.wheelbase = L;
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = 0.01 * i, v = 4 + 0.4 * t;  // 4 -> 20 m/s
+    const double r = v * delta / (L + K * v * v), ay = v * r;
+    h.t.push_back(t);
+    h.steer.push_back(delta * deg * 15);  // a 15:1 steering wheel
+    h.speed.push_back(v);
+    h.yawRate.push_back(r);
+    h.ay.push_back(ay);
+    h.sideslip.push_back((0.01 - 0.4 / deg * ay));
+    h.roll.push_back(0.25 / deg * ay);
+    h.x.push_back(0), h.y.push_back(0), h.heading.push_back(0);
+  }
+  const SteadyStateMetrics m = iso4138ConstantSteer(h);
+  ASSERT_TRUE(m.valid) << m.why;
+  EXPECT_NEAR(m.understeerGradient, U, 1e-9);
+  EXPECT_NEAR(m.sideslipGradient, -0.4, 1e-9);
+  EXPECT_NEAR(m.rollGradient, 0.25, 1e-9);
+  EXPECT_NEAR(m.steer, delta * deg * 15, 1e-9);
+  EXPECT_GT(m.samples, 100);
+  // The same car turning right: the same gradients.
+  for (size_t i = 0; i < h.t.size(); ++i) {
+    h.yawRate[i] = -h.yawRate[i], h.ay[i] = -h.ay[i], h.sideslip[i] = -h.sideslip[i], h.roll[i] = -h.roll[i];
+    h.steer[i] = -h.steer[i];
+  }
+  const SteadyStateMetrics right = iso4138ConstantSteer(h);
+  EXPECT_NEAR(right.understeerGradient, U, 1e-9);
+  EXPECT_NEAR(right.rollGradient, 0.25, 1e-9);
+}
+
 }  // namespace
 }  // namespace bdfcar::scenario
 
@@ -122,13 +162,14 @@ std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR
 // (a_y = V r, the sideslip steady) within 1 %.
 TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
   for (const char* file : {"scenarios/standard/iso7401_step_steer_80.toml",
-                           "scenarios/standard/fmvss126_sine_with_dwell_80.toml"}) {
+                           "scenarios/standard/fmvss126_sine_with_dwell_80.toml",
+                           "scenarios/standard/iso4138_constant_steer.toml"}) {
     const ScenarioSpec spec = loadScenarioFile(asset(file));
     ASSERT_NE(spec.standardTest, StandardTest::None) << file;
     Simulation sim(spec);
     const RunResult r = runScenario(sim, {});
     ASSERT_TRUE(r.ok) << r.failure;
-    const TimeHistory h = timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull);
+    const TimeHistory h = timeHistory(r, sim.vehicle());
     const StandardTestReport report = standardTestReport(spec.standardTest, h);
     EXPECT_TRUE(report.valid) << file << ": " << report.text;
     if (spec.standardTest == StandardTest::Iso7401StepSteer) {
@@ -138,7 +179,57 @@ TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
       EXPECT_GT(m.yawRate.responseTime, 0.0);
       EXPECT_LT(m.yawRate.responseTime, m.ay.responseTime);  // yaw leads lateral acceleration
     }
+    if (spec.standardTest == StandardTest::Iso4138ConstantSteer) {
+      // The sedan understeers, rolls out of the turn, and the wheelbase is
+      // its hardpoints' (docs/reference-vehicle.md: 2.46 m).
+      const SteadyStateMetrics m = iso4138ConstantSteer(h);
+      EXPECT_GT(m.understeerGradient, 0.0);
+      EXPECT_GT(m.rollGradient, 0.0);
+      EXPECT_NEAR(h.wheelbase, 2.46, 0.001);
+    }
   }
+}
+
+// ISO 3888-2 (ISO 3888-2:2011 Table 1): 61 m in sections of 12 / 13.5 / 11 /
+// 12.5 / 12 m; lane widths 1.1 w + 0.25, w + 1, min(1.3 w + 0.25, 3); the side
+// lane 1 m clear of the entry lane's left-hand limit.
+TEST(Iso3888Part2, CourseHasTheStandardsDimensions) {
+  for (const double w : {1.6, 2.16}) {
+    const Iso3888Course c = makeIso3888Course(w, 10.0, -1.0, 2);
+    EXPECT_DOUBLE_EQ(c.endX - c.startX, 61.0);
+    EXPECT_DOUBLE_EQ(c.lanes[0].x1 - c.lanes[0].x0, 12.0);
+    EXPECT_DOUBLE_EQ(c.lanes[1].x0 - c.lanes[0].x1, 13.5);
+    EXPECT_DOUBLE_EQ(c.lanes[1].x1 - c.lanes[1].x0, 11.0);
+    EXPECT_DOUBLE_EQ(c.lanes[2].x0 - c.lanes[1].x1, 12.5);
+    EXPECT_DOUBLE_EQ(c.lanes[0].width, 1.1 * w + 0.25);
+    EXPECT_DOUBLE_EQ(c.lanes[1].width, w + 1.0);
+    EXPECT_DOUBLE_EQ(c.lanes[2].width, std::min(1.3 * w + 0.25, 3.0));
+    const double entryLeft = c.lanes[0].centreY + 0.5 * c.lanes[0].width;
+    EXPECT_NEAR(c.lanes[1].centreY - 0.5 * c.lanes[1].width, entryLeft + 1.0, 1e-12);
+    EXPECT_NEAR(c.lanes[2].centreY - 0.5 * c.lanes[2].width, c.lanes[0].centreY - 0.5 * c.lanes[0].width, 1e-12);
+  }
+}
+
+// The shipped ISO 3888-2 run: the car enters at the test speed, the hold
+// lets go at the entry gate and the car coasts (slower at the exit); the
+// course is judged and its metrics written. (Whether the path follower
+// passes is the result, not the check: docs/STANDARD_TESTS.md.)
+TEST(Iso3888Part2, ShippedScenarioCoastsThroughAndIsJudged) {
+  const ScenarioSpec spec = loadScenarioFile(asset("scenarios/standard/iso3888_2_obstacle_avoidance_60.toml"));
+  Simulation sim(spec);
+  ASSERT_TRUE(sim.course().has_value());
+  EXPECT_EQ(sim.course()->part, 2);
+  const RunResult r = runScenario(sim, {});
+  ASSERT_TRUE(r.ok) << r.failure;
+  ASSERT_TRUE(r.course.has_value());
+  double entry = -1, exit = -1;
+  for (const Metric& m : runMetrics(r)) {
+    if (m.name == "course_entry_speed_mps") entry = m.value;
+    if (m.name == "course_exit_speed_mps") exit = m.value;
+  }
+  EXPECT_NEAR(entry, 60 / 3.6, 0.01 * 60 / 3.6);
+  EXPECT_GT(exit, 0.0);
+  EXPECT_LT(exit, entry);
 }
 
 }  // namespace

@@ -274,6 +274,7 @@ int runReport(const ReportArgs& a) {
       {"speed", [&] { speedSection(md, a); }},
       {"fidelity", [&] { fidelitySection(md, a.repeats, imageDir.string()); }},
       {"standard", [&] { standardTestsSection(md); }},
+      {"sweep", [&] { sweepSection(md, imageDir.string()); }},
       {"work-precision", [&] { workPrecisionSection(md, imageDir.string()); }},
       {"survival", [&] { survivalSection(md); }},
   };
@@ -300,9 +301,9 @@ void addReportCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--repeats", a->repeats, "Runs per timing (median)")->check(CLI::Range(1, 100));
   cmd->add_option("--only", a->only,
                   "Only these sections (reference, topologies, tables, explicit, hard, speed, fidelity, "
-                  "standard, work-precision, survival): a partial file, for working on one")
+                  "standard, sweep, work-precision, survival): a partial file, for working on one")
       ->check(CLI::IsMember({"reference", "topologies", "tables", "explicit", "hard", "speed", "fidelity",
-                             "standard", "work-precision", "survival"}));
+                             "standard", "sweep", "work-precision", "survival"}));
   commands.push_back({cmd, [a] { return reportErrors([&] { return runReport(*a); }); }});
 }
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "report/studies.h"
+#include "scenario/run_metrics.h"
 #include "scenario/standard_tests.h"
 #include "vehicle/vehicle_file.h"
 #include "vehicle/vehicle_sheet.h"
@@ -16,7 +17,8 @@ void standardTestsSection(std::ostream& md) {
      << "by hand; the steering ratio is the reference data's: 30 deg of steering wheel at full input):\n\n```\n"
      << vehicle::describe(vehicle::vehicleSheet(sedan)) << "```\n\n"
      << "The shipped standard tests (definitions and sources: docs/STANDARD_TESTS.md), at the paper's setting:\n\n";
-  for (const char* file : {"standard/iso7401_step_steer_80.toml", "standard/fmvss126_sine_with_dwell_80.toml"}) {
+  for (const char* file : {"standard/iso7401_step_steer_80.toml", "standard/fmvss126_sine_with_dwell_80.toml",
+                           "standard/iso4138_constant_steer.toml", "standard/iso3888_2_obstacle_avoidance_60.toml"}) {
     const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
     scenario::Simulation sim(spec);
     const scenario::RunResult r = scenario::runScenario(sim, {});
@@ -24,8 +26,17 @@ void standardTestsSection(std::ostream& md) {
       md << "`" << file << "`: the run failed: " << r.failure << "\n\n";
       continue;
     }
+    if (r.course) {
+      // A course: its verdict and speeds (run_metrics.h).
+      md << "`" << file << "`:\n\n| metric | value |\n|---|---|\n";
+      for (const scenario::Metric& m : scenario::runMetrics(r))
+        if (m.name.rfind("course_", 0) == 0 || m.name == "cones_hit") md << "| " << m.name << " | " << m.value << " |\n";
+      md << "\n";
+      command(md, std::string("assets/scenarios/") + file + " --metrics metrics.csv");
+      continue;
+    }
     const scenario::StandardTestReport report = scenario::standardTestReport(
-        spec.standardTest, scenario::timeHistory(r, sim.vehicle().spec.steering.steeringWheelFull));
+        spec.standardTest, scenario::timeHistory(r, sim.vehicle()));
     md << "```\n" << report.text << "```\n\n";
     command(md, std::string("assets/scenarios/") + file + " --metrics metrics.json");
   }

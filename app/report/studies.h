@@ -65,6 +65,8 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
 
 // Section of RESULTS.md: the reference sedan's vehicle sheet and standard-test metrics.
 void standardTestsSection(std::ostream& md);
+// The shipped sweep's summary and plots (images under imageDir).
+void sweepSection(std::ostream& md, const std::string& imageDir);
 
 // Sections of RESULTS.md: work-precision diagrams (image under imageDir) and
 // the hard cases' survival at long steps and with explicit methods.

@@ -1,15 +1,9 @@
 // `bdfcar sweep SWEEP.toml`: the cases of a sweep (sweep_spec.h) run on the
 // local cores, or written as jobs for GNU parallel or Slurm (--emit), and
 // `bdfcar sweep --collect DIR` merging what they wrote (sweep_collect.h).
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <mutex>
 #include <thread>
 
 #include "cli_errors.h"
@@ -18,8 +12,7 @@
 #include "scenario/row_file.h"
 #include "sweep/sweep_collect.h"
 #include "sweep/sweep_jobs.h"
-
-extern char** environ;
+#include "sweep/sweep_runner.h"
 
 namespace bdfcar::app {
 
@@ -29,41 +22,6 @@ struct SweepArgs {
   std::string file, out, emit, collect;
   int jobs = 0;
 };
-
-// Runs a command line through /bin/sh; its exit status (-1: not started or killed).
-int runShell(const std::string& line) {
-  const char* argv[] = {"/bin/sh", "-c", line.c_str(), nullptr};
-  pid_t pid;
-  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0) return -1;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// The cases on `jobs` threads, each running one command line at a time,
-// with a progress line on stderr.
-void runLocally(const std::vector<std::string>& lines, int jobs) {
-  std::atomic<std::size_t> next{0}, done{0};
-  std::mutex print;
-  const bool tty = isatty(STDERR_FILENO);
-  auto worker = [&] {
-    for (std::size_t i; (i = next++) < lines.size();) {
-      if (interruptRequested()) return;
-      runShell(lines[i]);
-      const std::size_t n = ++done;
-      std::lock_guard lock(print);
-      const int width = 30, filled = static_cast<int>(width * n / lines.size());
-      std::fprintf(stderr, "%s[%.*s%*s] %zu/%zu cases%s", tty ? "\r" : "", filled,
-                   "##############################", width - filled, "", n, lines.size(), tty ? "" : "\n");
-      std::fflush(stderr);
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int k = 0; k < jobs; ++k) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
-  if (tty) std::fprintf(stderr, "\n");
-}
 
 int printSummary(const SweepSummary& s) {
   std::printf("%d cases: %d ok, %d failed (the run failed: ok = 0 in the summary), %d without results\n", s.cases,
@@ -113,7 +71,7 @@ int runSweep(const SweepArgs& a) {
   for (const SweepCase& c : cases) lines.push_back(caseCommand(self, out, c));
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   InterruptGuard interrupts;
-  runLocally(lines, std::min<int>(jobs, static_cast<int>(lines.size())));
+  runCommandLines(lines, std::min<int>(jobs, static_cast<int>(lines.size())), true);
   if (interruptRequested()) {
     std::fprintf(stderr, "sweep stopped by %s; what ran is in %s (bdfcar sweep --collect %s merges it)\n",
                  interruptSignalName(), out.dir.c_str(), out.dir.c_str());

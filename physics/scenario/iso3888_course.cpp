@@ -1,13 +1,28 @@
 #include "scenario/iso3888_course.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace bdfcar::scenario {
 
-Iso3888Course makeIso3888Course(double w, double startX, double centreY) {
+Iso3888Course makeIso3888Course(double w, double startX, double centreY, int part) {
   Iso3888Course c;
   c.vehicleWidth = w;
+  c.part = part;
+  if (part == 2) {
+    const double w1 = 1.1 * w + 0.25, w3 = w + 1.0, w5 = std::min(1.3 * w + 0.25, 3.0);
+    const double rightEdge = centreY - 0.5 * w1;
+    double x = startX;
+    c.lanes[0] = {x, x + 12.0, centreY, w1};
+    x += 12.0 + 13.5;
+    c.lanes[1] = {x, x + 11.0, rightEdge + w1 + 1.0 + 0.5 * w3, w3};
+    x += 11.0 + 12.5;
+    c.lanes[2] = {x, x + 12.0, rightEdge + 0.5 * w5, w5};
+    c.startX = startX;
+    c.endX = x + 12.0;
+    return c;
+  }
   const double w1 = 1.1 * w + 0.25, w3 = 1.2 * w + 0.25, w5 = 1.3 * w + 0.25;
   const double rightEdge = centreY - 0.5 * w1;  // datum: entry lane right-hand cone line
   double x = startX;

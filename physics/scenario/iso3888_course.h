@@ -1,4 +1,4 @@
-// Geometry of the ISO 3888-1 double-lane-change course, as this project
+// Geometry of the ISO 3888 lane-change courses. Part 1 (double lane change), as this project
 // specifies it: five sections of 15 / 30 / 25 / 25 / 15 m; lane widths
 // 1.1 w + 0.25 (entry), 1.2 w + 0.25 (side lane), 1.3 w + 0.25 (exit), w the
 // vehicle width. The right-hand cone line of the entry lane is the datum: the
@@ -6,6 +6,12 @@
 // exit lane shares the entry lane's right-hand cone line. The course starts at
 // x = startX; the entry lane is centred on y = centreY. Plain geometry, used
 // by the path follower, the pass/fail judge and the renderer alike.
+//
+// Part 2 (obstacle avoidance, ISO 3888-2:2011 Table 1): sections of 12 /
+// 13.5 / 11 / 12.5 / 12 m (61 m); lane widths 1.1 w + 0.25 (entry), w + 1
+// (side lane), 1.3 w + 0.25 but at most 3 m (exit); the side lane's
+// right-hand limit lies 1 m to the left of the entry lane's left-hand limit,
+// and the exit lane shares the entry lane's right-hand limit.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +31,7 @@ struct CourseLane {
 };
 
 struct Iso3888Course {
+  int part = 1;                     // ISO 3888-1 or -2
   double vehicleWidth = 0;
   std::array<CourseLane, 3> lanes;  // entry, side, exit (sections 1, 3, 5)
   double startX = 0, endX = 0;
@@ -45,6 +52,6 @@ struct Iso3888Course {
   double drivingLineY(double x, double carWidth, double marginUse) const;
 };
 
-Iso3888Course makeIso3888Course(double vehicleWidth, double startX = 0.0, double centreY = 0.0);
+Iso3888Course makeIso3888Course(double vehicleWidth, double startX = 0.0, double centreY = 0.0, int part = 1);
 
 }  // namespace bdfcar::scenario

@@ -35,6 +35,15 @@ std::vector<Metric> runMetrics(const RunResult& r) {
   if (r.course) {
     m.push_back({"course_passed", r.course->passed && r.course->exitTime >= 0 ? 1.0 : 0.0});
     m.push_back({"cones_hit", static_cast<double>(r.course->coneHits)});
+    // Speeds at the course's entry and exit (0 when not reached).
+    auto speedAt = [&](double t) {
+      for (const vehicle::VehicleSample& s : r.samples)
+        if (t >= 0 && s.t >= t) return s.speed;
+      return 0.0;
+    };
+    m.push_back({"course_entry_speed_mps", speedAt(r.course->entryTime)});
+    m.push_back({"course_exit_speed_mps", speedAt(r.course->exitTime)});
+    m.push_back({"course_peak_ay_mps2", r.course->peakLateralAcceleration});
   }
   return m;
 }

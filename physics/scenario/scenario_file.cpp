@@ -224,15 +224,26 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
   if (auto t = root.optionalTable("brake")) s.brake = readSignal(*t, 0.0, 1.0);
   if (auto sp = root.optionalTable("speed_control")) {
     s.speedControl.enabled = true;
-    s.speedControl.target = sp->number("target", Dimension::Speed, kSpeed);
+    SpeedProfile& p = s.speedControl.profile;
+    p.target = sp->number("target", Dimension::Speed, kSpeed);
     s.speedControl.kp = sp->number("kp", Dimension::TorqueRate, kGain, s.speedControl.kp);
     s.speedControl.ki = sp->number("ki", Dimension::None, kGain, s.speedControl.ki);
+    p.start = sp->number("start", Dimension::Time, kTime, p.start);
+    p.end = sp->number("end", Dimension::Time, kTime, p.end);
+    sp->require(p.end > p.start, "end", "an end after the start (" + config::formatNumber(p.start) + " s)");
+    if (sp->has("ramp_to")) {
+      p.rampTo = sp->number("ramp_to", Dimension::Speed, kSpeed);
+      p.rampStart = sp->number("ramp_start", Dimension::Time, kTime);
+      p.rampDuration = sp->number("ramp_duration", Dimension::Time, kSpan);
+    }
     sp->finish();
   }
   if (auto c = root.optionalTable("course")) {
     const std::string type = c->string("type");
-    if (type != "iso3888") c->fail("unknown course '" + type + "': expected iso3888", "type");
+    if (type != "iso3888" && type != "iso3888_2")
+      c->fail("unknown course '" + type + "': expected iso3888 (ISO 3888-1) or iso3888_2 (ISO 3888-2)", "type");
     s.course.iso3888 = true;
+    s.course.part = type == "iso3888_2" ? 2 : 1;
     s.course.startX = c->number("start_x", Dimension::Length, kPosition, s.course.startX);
     c->finish();
   }
@@ -251,7 +262,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     const std::string test = m->string("test");
     if (test == "iso7401_step_steer") s.standardTest = StandardTest::Iso7401StepSteer;
     else if (test == "fmvss126_sine_with_dwell") s.standardTest = StandardTest::Fmvss126SineWithDwell;
-    else m->fail("unknown standard test '" + test + "': expected iso7401_step_steer or fmvss126_sine_with_dwell", "test");
+    else if (test == "iso4138_constant_steer") s.standardTest = StandardTest::Iso4138ConstantSteer;
+    else m->fail("unknown standard test '" + test +
+                     "': expected iso7401_step_steer, fmvss126_sine_with_dwell or iso4138_constant_steer",
+                 "test");
     m->finish();
   }
   root.finish();

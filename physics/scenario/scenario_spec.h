@@ -9,6 +9,7 @@
 #include "config/toml_reader.h"
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
+#include "scenario/speed_controller.h"
 #include "vehicle/vehicle_builder.h"
 
 namespace bdfcar::scenario {
@@ -37,12 +38,13 @@ struct SignalSpec {
 
 struct SpeedControlSpec {
   bool enabled = false;
-  double target = 0;           // m/s
+  SpeedProfile profile;        // target (m/s), its ramp, when the hold acts (speed_controller.h)
   double kp = 600, ki = 300;   // per driven wheel: N m/(m/s), N m/m
 };
 
 struct CourseSpec {
   bool iso3888 = false;
+  int part = 1;                // ISO 3888-1 (double lane change) or -2 (obstacle avoidance)
   double startX = 50;          // m, where the course begins
 };
 
@@ -96,7 +98,7 @@ AutoRungs autoRungs(double errorBudget);
 
 // A standard test the scenario is ([metrics] test): its metrics are
 // computed after the run (scenario/standard_tests.h).
-enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell };
+enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell, Iso4138ConstantSteer };
 
 struct ScenarioSpec {
   std::string name, sourceFile;

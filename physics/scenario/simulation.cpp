@@ -107,7 +107,7 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
   if (rung == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
   if (w->planar) vehicle::setPlanarGround(*w->planar, g.hit ? g.point.z() : 0.0);
-  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY);
+  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY, spec.course.part);
   return w;
 }
 
@@ -145,7 +145,10 @@ Simulation::Simulation(std::shared_ptr<const World> world)
   }
   activate(0);
   if (spec.speedControl.enabled)
-    speed_.emplace(spec.speedControl.target, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki});
+    speed_.emplace(spec.speedControl.profile, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki},
+                   // The driveline's limit per driven wheel (none on a vehicle without one).
+                   vehicle().spec.maxDriveTorque > 0 ? vehicle().spec.maxDriveTorque
+                                                     : std::numeric_limits<double>::infinity());
   if (spec.pathFollower.enabled) {
     PathFollowerParams p;
     p.lookAheadTime = spec.pathFollower.lookAheadTime;
@@ -345,7 +348,7 @@ vehicle::EquilibriumReport Simulation::prepare() {
 
 void Simulation::applyDrive(const DriverInput& in, double vx, double h) {
   double pi = 0;
-  if (speed_) pi = speed_->torque(vx, h);
+  if (speed_) pi = speed_->torque(vx, h, time());
   for (int w = 0; w < 4; ++w) {
     const vehicle::WheelSpec& ws = vehicle().wheel(w);
     const double drive = ws.driven ? in.throttle * vehicle().spec.maxDriveTorque + pi : 0.0;

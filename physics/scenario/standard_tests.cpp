@@ -149,8 +149,9 @@ SineWithDwellMetrics fmvss126SineWithDwell(const TimeHistory& h, double beginThr
   return m;
 }
 
-TimeHistory timeHistory(const RunResult& r, double steeringWheelFull) {
+TimeHistory timeHistory(const RunResult& r, double steeringWheelFull, double wheelbase) {
   TimeHistory h;
+  h.wheelbase = wheelbase;
   const double wheelDeg = steeringWheelFull * 180.0 / 3.14159265358979323846;
   for (size_t i = 0; i < r.samples.size() && i < r.steerInputs.size(); ++i) {
     const vehicle::VehicleSample& s = r.samples[i];
@@ -161,8 +162,90 @@ TimeHistory timeHistory(const RunResult& r, double steeringWheelFull) {
     h.x.push_back(s.com.x());
     h.y.push_back(s.com.y());
     h.heading.push_back(s.yaw);
+    h.speed.push_back(s.speed);
+    h.sideslip.push_back(s.sideslip);
+    h.roll.push_back(s.roll);
   }
   return h;
+}
+
+TimeHistory timeHistory(const RunResult& r, const vehicle::Vehicle& v) {
+  const auto& c = v.layout.wheelCentreAtDesign;
+  const double wheelbase = 0.5 * (c[0].x() + c[1].x()) - 0.5 * (c[2].x() + c[3].x());
+  return timeHistory(r, v.spec.steering.steeringWheelFull, wheelbase);
+}
+
+namespace {
+// Least-squares slope of y against x.
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
+  mx /= static_cast<double>(x.size());
+  my /= static_cast<double>(x.size());
+  double sxx = 0, sxy = 0;
+  for (size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx), sxy += (x[i] - mx) * (y[i] - my);
+  return sxy / sxx;
+}
+}  // namespace
+
+SteadyStateMetrics iso4138ConstantSteer(const TimeHistory& h, double ayLow, double ayHigh) {
+  SteadyStateMetrics m;
+  m.ayLow = ayLow;
+  m.ayHigh = ayHigh;
+  if (!(h.wheelbase > 0)) {
+    m.why = "no wheelbase";
+    return m;
+  }
+  std::vector<double> ay, curvature, beta, roll;
+  double steerSum = 0;
+  for (size_t i = 0; i < h.t.size(); ++i) {
+    const double a = std::abs(h.ay[i]);
+    m.maxAy = std::max(m.maxAy, a);
+    if (a < ayLow || a > ayHigh || h.speed[i] < 1.0) continue;
+    // Left and right turns alike: signs taken with the turn's.
+    const double turn = h.ay[i] > 0 ? 1.0 : -1.0;
+    ay.push_back(a);
+    curvature.push_back(turn * h.wheelbase * h.yawRate[i] / h.speed[i]);
+    beta.push_back(turn * h.sideslip[i]);
+    roll.push_back(turn * h.roll[i]);
+    steerSum += h.steer[i];
+  }
+  m.samples = static_cast<int>(ay.size());
+  if (m.samples < 10) {
+    m.why = "fewer than 10 samples with |a_y| in [" + std::to_string(ayLow) + ", " + std::to_string(ayHigh) + "] m/s^2";
+    return m;
+  }
+  const double deg = 180.0 / 3.14159265358979323846;
+  m.steer = steerSum / m.samples;
+  m.understeerGradient = -slope(ay, curvature) * deg * 9.81;
+  m.sideslipGradient = slope(ay, beta) * deg;
+  m.rollGradient = slope(ay, roll) * deg;
+  m.valid = true;
+  return m;
+}
+
+std::string describe(const SteadyStateMetrics& m) {
+  if (!m.valid) return "ISO 4138 constant steering-wheel angle: no metrics (" + m.why + ")\n";
+  char buf[600];
+  std::snprintf(buf, sizeof buf,
+                "ISO 4138 constant steering-wheel angle (%.1f deg held; %d samples with a_y in [%.1f, %.1f] m/s^2, "
+                "largest a_y %.2f m/s^2):\n"
+                "  understeer gradient %.3f deg/g, sideslip gradient %.4f deg/(m/s^2), roll gradient %.4f "
+                "deg/(m/s^2)\n",
+                m.steer, m.samples, m.ayLow, m.ayHigh, m.maxAy, m.understeerGradient, m.sideslipGradient,
+                m.rollGradient);
+  return buf;
+}
+
+std::string toJson(const SteadyStateMetrics& m) {
+  if (!m.valid) return "{\"test\": \"iso4138_constant_steer\", \"valid\": false, \"why\": \"" + m.why + "\"}\n";
+  char buf[500];
+  std::snprintf(buf, sizeof buf,
+                "{\"test\": \"iso4138_constant_steer\", \"valid\": true, \"steer_deg\": %.6g, \"understeer_gradient_deg_per_g\": "
+                "%.6g, \"sideslip_gradient_deg_per_mps2\": %.6g, \"roll_gradient_deg_per_mps2\": %.6g, \"ay_window_mps2\": "
+                "[%.6g, %.6g], \"samples\": %d, \"max_ay_mps2\": %.6g}\n",
+                m.steer, m.understeerGradient, m.sideslipGradient, m.rollGradient, m.ayLow, m.ayHigh, m.samples, m.maxAy);
+  return buf;
 }
 
 StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h) {
@@ -182,6 +265,14 @@ StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h) {
         r.metrics.push_back({p + "_overshoot", x->overshoot});
       }
     }
+  } else if (test == StandardTest::Iso4138ConstantSteer) {
+    const SteadyStateMetrics m = iso4138ConstantSteer(h);
+    r = {m.valid, describe(m), toJson(m), {{"iso4138_valid", m.valid ? 1.0 : 0.0}}};
+    if (m.valid)
+      r.metrics.insert(r.metrics.end(), {{"iso4138_understeer_gradient_deg_per_g", m.understeerGradient},
+                                         {"iso4138_sideslip_gradient_deg_per_mps2", m.sideslipGradient},
+                                         {"iso4138_roll_gradient_deg_per_mps2", m.rollGradient},
+                                         {"iso4138_max_ay_mps2", m.maxAy}});
   } else if (test == StandardTest::Fmvss126SineWithDwell) {
     const SineWithDwellMetrics m = fmvss126SineWithDwell(h);
     r = {m.valid, describe(m), toJson(m), {{"fmvss126_valid", m.valid ? 1.0 : 0.0}}};

@@ -6,7 +6,10 @@
 //    reaches 50 % of its step; overshoot; steady-state gains;
 //  - FMVSS 126 / UN R13-H sine with dwell: yaw rate 1.00 s and 1.75 s after
 //    the completion of steer as % of the peak yaw rate, lateral displacement
-//    1.07 s after the beginning of steer, each with the regulation's limit.
+//    1.07 s after the beginning of steer, each with the regulation's limit;
+//  - ISO 4138 steady-state circular driving, constant steering-wheel angle
+//    with a slowly increasing speed: the understeer gradient, the sideslip
+//    and roll gradients over a lateral-acceleration window.
 // Plain functions of arrays (time, inputs, responses): tested on synthetic
 // responses with known answers, then applied to simulated runs.
 #pragma once
@@ -27,6 +30,9 @@ struct TimeHistory {
   std::vector<double> ay;      // m/s^2
   std::vector<double> x, y;    // m, centre of mass in the ground plane
   std::vector<double> heading; // rad
+  std::vector<double> speed;   // m/s
+  std::vector<double> sideslip, roll;  // rad
+  double wheelbase = 0;        // m (ISO 4138)
 };
 
 // One response (yaw rate or lateral acceleration) to a step.
@@ -67,9 +73,29 @@ struct SineWithDwellMetrics {
 // regulation's 5 deg of handwheel angle when steer is in degrees).
 SineWithDwellMetrics fmvss126SineWithDwell(const TimeHistory& h, double beginThreshold = 5.0);
 
+// ISO 4138 (constant steering-wheel angle): over the samples with a_y in
+// [ayLow, ayHigh] and moving, least-squares slopes against a_y of
+//  - L / R (R = v / r, L the wheelbase): the understeer gradient is minus
+//    that slope, since the steer is constant and delta = L / R + U a_y;
+//  - the sideslip angle and the roll angle.
+struct SteadyStateMetrics {
+  bool valid = false;
+  std::string why;
+  double steer = 0;                // steering-wheel angle held, as the input (deg)
+  double understeerGradient = 0;   // deg/g of road-wheel angle (+ understeer)
+  double sideslipGradient = 0;     // deg per m/s^2
+  double rollGradient = 0;         // deg per m/s^2 (+ rolling out of the turn)
+  double ayLow = 0, ayHigh = 0;    // the window, m/s^2
+  int samples = 0;                 // in the window
+  double maxAy = 0;                // m/s^2, the largest reached
+};
+SteadyStateMetrics iso4138ConstantSteer(const TimeHistory& h, double ayLow = 1.0, double ayHigh = 4.0);
+
 // A run's time history (its kept samples and steering inputs); the steering
 // as steering-wheel angle in deg, from the input's full scale (rad).
-TimeHistory timeHistory(const RunResult& r, double steeringWheelFull);
+TimeHistory timeHistory(const RunResult& r, double steeringWheelFull, double wheelbase = 0);
+// The same with the vehicle's steering scale and wheelbase (wheel centres at design).
+TimeHistory timeHistory(const RunResult& r, const vehicle::Vehicle& v);
 
 // The scenario's standard test on a time history: its metrics as text lines
 // and as one JSON object.
@@ -83,7 +109,9 @@ StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h);
 // The metrics as text lines and as one JSON object.
 std::string describe(const StepSteerMetrics& m);
 std::string describe(const SineWithDwellMetrics& m);
+std::string describe(const SteadyStateMetrics& m);
 std::string toJson(const StepSteerMetrics& m);
 std::string toJson(const SineWithDwellMetrics& m);
+std::string toJson(const SteadyStateMetrics& m);
 
 }  // namespace bdfcar::scenario

@@ -230,8 +230,12 @@ void Loader::readBodies() {
           js.axis.normalize();
         } else if (type == "universal") {
           js.type = mb::JointType::Universal;
-          js.axisParent = vectorOf(j, "axis_parent", s).normalized();
-          js.axisChild = vectorOf(j, "axis_child", s).normalized();
+          // Zero axes would pass the perpendicularity check (a zero dot product).
+          const Vec3 ap = vectorOf(j, "axis_parent", s), ac = vectorOf(j, "axis_child", s);
+          j.require(ap.norm() > 1e-9, "axis_parent", "a non-zero axis");
+          j.require(ac.norm() > 1e-9, "axis_child", "a non-zero axis");
+          js.axisParent = ap.normalized();
+          js.axisChild = ac.normalized();
           j.require(std::abs(js.axisParent.dot(js.axisChild)) < 1e-3, "axis_child",
                     "an axis perpendicular to axis_parent (the cross of a universal joint)");
         } else if (type == "spherical") {
