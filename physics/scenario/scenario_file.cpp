@@ -1,8 +1,12 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "config/toml_reader.h"
 #include "scenario/scenario_spec.h"
+#include "vehicle/motion_ratio.h"
 
 namespace bdfcar::scenario {
 
@@ -44,11 +48,76 @@ std::string resolveAsset(Table& t, const std::string& key) {
   return p.string();
 }
 
-SignalSpec readSignal(Table t, double lo, double hi) {
+// The columns of a CSV file of inputs (a header of names, then rows of
+// numbers): `time` and `column` as a table signal; errors name the file and line.
+void readCsvSignal(Table& t, const std::string& defaultColumn, const Range& levels, SignalSpec& s) {
+  const std::filesystem::path rel = t.string("file");
+  const std::filesystem::path path = rel.is_absolute() ? rel : std::filesystem::path(t.folderOf("file")) / rel;
+  const std::string column = t.string("column", defaultColumn), timeColumn = t.string("time_column", "time_s");
+  std::ifstream in(path);
+  if (!in) t.fail("cannot read the CSV file '" + path.string() + "'", "file");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::stringstream ss(line); std::getline(ss, line, ',');) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    names.push_back(line);
+  }
+  auto index = [&](const std::string& name, const char* key) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) t.fail("the CSV file '" + path.string() + "' has no column '" + name + "'", key);
+    return static_cast<std::size_t>(it - names.begin());
+  };
+  const std::size_t ti = index(timeColumn, "time_column"), vi = index(column, "column");
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty() || line == "\r") continue;
+    std::vector<std::string> f;
+    for (std::stringstream ss(line); std::getline(ss, line, ',');) f.push_back(line);
+    auto number = [&](std::size_t i, const std::string& name) {
+      char* end = nullptr;
+      const double x = i < f.size() ? std::strtod(f[i].c_str(), &end) : std::nan("");
+      if (i >= f.size() || end == f[i].c_str() || !std::isfinite(x))
+        throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + name +
+                                  "': expected a finite number" + (i < f.size() ? ", got \"" + f[i] + "\"" : ""));
+      return x;
+    };
+    const double time = number(ti, timeColumn), value = number(vi, column);
+    if (!s.times.empty() && !(time > s.times.back()))
+      throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + timeColumn +
+                                "': expected strictly increasing times");
+    if (!kTime.contains(time) || !levels.contains(value))
+      throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + column + "': expected " +
+                                "a value " + levels.text() + " at a time " + kTime.text());
+    s.times.push_back(time);
+    s.values.push_back(value);
+    if (s.times.size() > 10000000) t.fail("the CSV file '" + path.string() + "' has more than 1e7 rows", "file");
+  }
+  if (s.times.empty()) t.fail("the CSV file '" + path.string() + "' has no rows", "file");
+}
+
+// A signal table; steering (`steering` true) may be in engineering units.
+SignalSpec readSignal(Table t, double lo, double hi, const std::string& csvColumn, bool steering = false) {
   SignalSpec s;
+  s.where = t.file() + ":" + std::to_string(t.line());
   const std::string type = t.string("type");
-  const Range levels{lo, hi};
-  auto level = [&](const char* key) { return t.number(key, Dimension::None, levels); };
+  Dimension dim = Dimension::None;
+  Range levels{lo, hi};
+  if (steering) {
+    const std::string unit =
+        t.choice("unit", {"normalised", "steering_wheel_angle", "road_wheel_angle", "rack_travel"}, "normalised");
+    using U = SignalSpec::Unit;
+    s.unit = unit == "steering_wheel_angle" ? U::SteeringWheelAngle
+             : unit == "road_wheel_angle"   ? U::RoadWheelAngle
+             : unit == "rack_travel"        ? U::RackTravel
+                                            : U::Normalised;
+    // In engineering units the vehicle's full steering bounds them, checked
+    // when the vehicle is known (normalisedSteering).
+    if (s.unit == U::RackTravel) dim = Dimension::Length, levels = Range{-10.0, 10.0};
+    else if (s.unit != U::Normalised) dim = Dimension::Angle, levels = Range{-100.0, 100.0};
+  }
+  auto level = [&](const char* key) { return t.number(key, dim, levels); };
   if (type == "none") {
     s.kind = SignalSpec::Kind::None;
   } else if (type == "constant") {
@@ -58,6 +127,12 @@ SignalSpec readSignal(Table t, double lo, double hi) {
     s.kind = SignalSpec::Kind::Ramp;
     s.start = t.number("start", Dimension::Time, kTime);
     s.duration = t.number("duration", Dimension::Time, kSpan);
+    s.level = level("level");
+  } else if (type == "step") {
+    // A step of `level` at `start`, reached in `rise_time` (linear): ISO 7401's 0.1 s by default.
+    s.kind = SignalSpec::Kind::Ramp;
+    s.start = t.number("start", Dimension::Time, kTime);
+    s.duration = t.number("rise_time", Dimension::Time, kSpan, 0.1);
     s.level = level("level");
   } else if (type == "sine") {
     s.kind = SignalSpec::Kind::Sine;
@@ -87,13 +162,18 @@ SignalSpec readSignal(Table t, double lo, double hi) {
     s.kind = SignalSpec::Kind::Table;
     // Finite, increasing times: TableSignal::at searches them (a NaN breaks the search).
     s.times = t.numbers("times", Dimension::Time, kTime);
-    s.values = t.numbers("values", Dimension::None, levels);
+    s.values = t.numbers("values", dim, levels);
     t.require(!s.times.empty(), "times", "at least one time");
     t.require(s.times.size() == s.values.size(), "values", "as many values as times (" + std::to_string(s.times.size()) + ")");
     for (size_t i = 1; i < s.times.size(); ++i)
       if (!(s.times[i] > s.times[i - 1])) t.reject("times", "strictly increasing times", static_cast<int>(i));
+  } else if (type == "csv") {
+    s.kind = SignalSpec::Kind::Table;
+    readCsvSignal(t, csvColumn, levels, s);
   } else {
-    t.fail("unknown signal type '" + type + "': expected none, constant, ramp, sine, sine_with_dwell, chirp, square or table", "type");
+    t.fail("unknown signal type '" + type +
+               "': expected none, constant, ramp, step, sine, sine_with_dwell, chirp, square, table or csv",
+           "type");
   }
   // A driver's command through the vehicle's steering system (as a person's
   // input, sampled once a tick) rather than a prescribed rack motion.
@@ -132,6 +212,33 @@ CheckSpec readCheck(Table& t) {
 }
 
 }  // namespace
+
+SignalSpec normalisedSteering(const SignalSpec& in, const vehicle::Vehicle& linkage) {
+  using U = SignalSpec::Unit;
+  if (in.unit == U::Normalised) return in;
+  const vehicle::SteeringSpec& st = linkage.spec.steering;
+  double full = 0;  // the unit's value at s = 1
+  std::string what, unit;
+  if (in.unit == U::SteeringWheelAngle) full = st.steeringWheelFull, what = "steering-wheel angle", unit = "deg";
+  if (in.unit == U::RackTravel) full = st.rackTravelFull, what = "rack travel", unit = "m";
+  if (in.unit == U::RoadWheelAngle) full = vehicle::roadWheelAnglePerSteer(linkage), what = "road-wheel angle", unit = "deg";
+  const double shown = unit == "deg" ? 180.0 / 3.14159265358979323846 : 1.0;
+  if (!(std::abs(full) > 0))
+    throw config::ConfigError(in.where + ": [steering] in " + what + ": the vehicle has no " + what + " scale");
+  SignalSpec s = in;
+  s.unit = U::Normalised;
+  auto convert = [&](double x) {
+    const double n = x / full;
+    if (!(std::abs(n) <= 1.0))
+      throw config::ConfigError(in.where + ": [steering] " + config::formatNumber(x * shown) + " " + unit + " of " +
+                                what + " is beyond the vehicle's full steering (" +
+                                config::formatNumber(full * shown) + " " + unit + ")");
+    return n;
+  };
+  s.level = convert(s.level);
+  for (double& v : s.values) v = convert(v);
+  return s;
+}
 
 bool parseFidelity(const std::string& name, vehicle::Fidelity& out) {
   if (name == "linkage") out = vehicle::Fidelity::Linkage;
@@ -219,9 +326,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     b.rtol = it->number("rtol", Dimension::None, Range{0.0, 1.0, false, false}, b.rtol);
     it->finish();
   }
-  if (auto t = root.optionalTable("steering")) s.steering = readSignal(*t, -1.0, 1.0);
-  if (auto t = root.optionalTable("throttle")) s.throttle = readSignal(*t, 0.0, 1.0);
-  if (auto t = root.optionalTable("brake")) s.brake = readSignal(*t, 0.0, 1.0);
+  // A CSV file's default columns are the telemetry's (a run's telemetry replays).
+  if (auto t = root.optionalTable("steering")) s.steering = readSignal(*t, -1.0, 1.0, "steer_in", true);
+  if (auto t = root.optionalTable("throttle")) s.throttle = readSignal(*t, 0.0, 1.0, "throttle_in");
+  if (auto t = root.optionalTable("brake")) s.brake = readSignal(*t, 0.0, 1.0, "brake_in");
   if (auto sp = root.optionalTable("speed_control")) {
     s.speedControl.enabled = true;
     SpeedProfile& p = s.speedControl.profile;

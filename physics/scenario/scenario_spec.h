@@ -27,7 +27,13 @@ struct IntegratorSpec {
 
 // A scripted input channel (steering in [-1, 1], throttle and brake in [0, 1]).
 struct SignalSpec {
+  // step is a ramp (its rise time); csv a table read from a CSV file.
   enum class Kind { None, Constant, Ramp, Sine, SineWithDwell, Chirp, Square, Table } kind = Kind::None;
+  // Steering only: what the levels, amplitudes and values are. The run
+  // turns them into the normalised input s with the vehicle's scales
+  // (normalisedSteering, simulation.cpp).
+  enum class Unit { Normalised, SteeringWheelAngle, RoadWheelAngle, RackTravel } unit = Unit::Normalised;
+  std::string where;                          // "file:line" of the table, for errors found then
   double start = 0, duration = 0, level = 0;  // ramp: from 0 at start to level after duration; sine, square: period = duration, amplitude = level
   int periods = 1;                            // sine: whole periods
   double dwell = 0.5;                         // sine with dwell: s at the second peak
@@ -122,6 +128,12 @@ struct ScenarioSpec {
   CheckSpec check;
   StandardTest standardTest = StandardTest::None;
 };
+
+// A steering signal in the normalised input s, from steering-wheel angle,
+// road-wheel angle (at small angles: the linkage's mean front road-wheel
+// angle per unit s) or rack travel; throws config::ConfigError (at
+// s.where) when a value is beyond the vehicle's full steering.
+SignalSpec normalisedSteering(const SignalSpec& s, const vehicle::Vehicle& linkage);
 
 // "linkage", "kinematic" or "planar"; false for anything else.
 bool parseFidelity(const std::string& name, vehicle::Fidelity& out);

@@ -76,6 +76,8 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile, spec.vehicleSettings));
+  // Steering in engineering units becomes the normalised input, from the linkage's scales.
+  w->spec.steering = normalisedSteering(spec.steering, w->vehicle);
   const scenario::AutoRungs automatic = autoRungs(spec.fidelity.errorBudget);
   const vehicle::Fidelity rung = spec.fidelity.automatic ? automatic.full : spec.fidelity.suspension;
   // A derived model names the vehicle file and the rung the scenario asked for.
