@@ -109,6 +109,9 @@ int runInfo(const std::string& path, const std::string& fidelity) {
     if (ratios[k].wheel >= 0) std::printf("  (%s: %+.5f)", vehicle::kCornerNames[ratios[k].wheel], ratios[k].ratio);
     std::printf("\n");
   }
+  for (const vehicle::AntiRollBarSpec& b : v.spec.antiRollBars)
+    std::printf("  %-18s anti-roll bar %s - %s, %.0f N/m at the wheels\n", b.name.c_str(), vehicle::kCornerNames[b.left],
+                vehicle::kCornerNames[b.right], b.rate);
   const int spin = v.layout.spinCoordinates;
   const int coords = m.nv - spin, cuts = v.layout.cutJointEquations;
   std::printf("\nrelative coordinates: %d (+%d wheel spin)\n", coords, spin);

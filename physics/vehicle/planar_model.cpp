@@ -268,8 +268,28 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
   outV.planar = loads;
   out.sprungMass = kch.mass;
   out.sprungComHeight = sprungCom.z();
-  for (int a = 0; a < 2; ++a)
-    out.rollStiffness += (loads.rate[2 * a] + loads.rate[2 * a + 1]) * 0.25 * loads.track[a] * loads.track[a];
+  // Each axle's roll stiffness: the suspension (with its anti-roll bars,
+  // rate t^2 each) in series with the tyres. Without a bar this is the
+  // corner springs' own, sum(rate) t^2 / 4; with one, the planar model adds
+  // the difference as a bar on the corners' deflection (barRate).
+  for (int a = 0; a < 2; ++a) {
+    const double t2 = loads.track[a] * loads.track[a];
+    const int l = 2 * a, r = 2 * a + 1;
+    const double corners = (loads.rate[l] + loads.rate[r]) * 0.25 * t2;
+    double bars = 0;
+    for (const AntiRollBarSpec& bar : kin.spec.antiRollBars)
+      if (bar.left / 2 == a) bars += bar.rate * t2;
+    double axle = corners;
+    if (bars > 0) {
+      auto tyreRate = [&](int w) { return 1.0 / (1.0 / loads.rate[w] - 1.0 / out.wheelRate[w]); };
+      const double suspension = (out.wheelRate[l] + out.wheelRate[r]) * 0.25 * t2 + bars;
+      const double tyres = (tyreRate(l) + tyreRate(r)) * 0.25 * t2;
+      axle = 1.0 / (1.0 / suspension + 1.0 / tyres);
+      loads.barRate[a] = (axle - corners) / t2;
+    }
+    out.rollStiffness += axle;
+  }
+  outV.planar->barRate = loads.barRate;
   out.vehicle = std::move(outV);
   return out;
 }

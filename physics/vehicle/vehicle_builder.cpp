@@ -204,6 +204,13 @@ double wheelCentreTravel(const Vehicle& v, const mb::Data& d, int w) {
   return centre.z() - v.layout.wheelCentreAtDesign[w].z();
 }
 
+double suspensionTravel(const Vehicle& v, const mb::Data& d, int w) {
+  const double raw = wheelCentreTravel(v, d, w);
+  if (!v.planar) return raw;
+  const PlanarLoads& P = *v.planar;
+  return P.restTravel[w] + P.suspensionShare[w] * (raw - P.restTravel[w]);
+}
+
 Eigen::VectorXd designPositions(const Vehicle& v) {
   Eigen::VectorXd q = mb::neutralPositions(v.model);
   if (v.model.bodies[0].joint == mb::JointType::Free) q(v.model.bodies[0].qIndex + 2) = v.spec.designHeight;

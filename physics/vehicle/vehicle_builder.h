@@ -66,6 +66,10 @@ struct PlanarLoads {
   double axisHeight = 0;               // m, roll and pitch axes above the ground
   Vec3 comInBase = Vec3::Zero();       // the vehicle's centre of mass in the base frame at rest
   std::array<double, 4> restTravel{};  // m, wheelCentreTravel at rest (the base and body unrolled)
+  // Per axle, the anti-roll bars' rate on the corners' deflection (suspension
+  // and tyre in series): what brings the axle's roll stiffness from the
+  // corner springs' to that of (suspension + bar) in series with the tyres.
+  std::array<double, 2> barRate{};     // N/m
 };
 
 // A plain value: copies stay valid (the layout holds indices, no pointers).
@@ -98,6 +102,9 @@ void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x);
 // model's wheel does not compress its tyre, so its suspension takes only its
 // share of this (PlanarLoads::suspensionShare).
 double wheelCentreTravel(const Vehicle& v, const mb::Data& d, int w);
+// The suspension's travel of wheel w (the telemetry's travel_XX_m): the
+// wheel-centre travel, of which a planar model's suspension takes its share.
+double suspensionTravel(const Vehicle& v, const mb::Data& d, int w);
 
 // Positions at design with the chassis frame at (0, 0, designHeight) (a
 // planar model: its base at the origin of its plane, unrolled).

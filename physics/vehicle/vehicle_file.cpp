@@ -27,6 +27,7 @@ const Range kDesignHeight{0.0, 10.0, true, true};         // m
 const Range kForce{-1e7, 1e7};                            // N, preloads
 const Range kStiffness{0.0, 1e9};                         // N/m, springs and stops (0: none)
 const Range kDamping{0.0, 1e8};                           // N s/m
+const Range kTorsion{0.0, 1e8};                           // N m/rad, anti-roll bars
 const Range kCurveEntry{-1e9, 1e9};                       // x (m or m/s) and force (N) of a curve
 const Range kTyreRadius{0.05, 2.0};                       // m
 const Range kTyreWidth{0.0, 2.0, true, false};            // m
@@ -71,6 +72,7 @@ class Loader {
   void readBodies();
   void readCutJoints();
   void readSprings();
+  void readAntiRollBars();
   void readWheels();
   void readSteeringAndDriveline();
   void readAppearance();
@@ -409,6 +411,31 @@ void Loader::readWheels() {
   spec_.wheels = sorted;
 }
 
+void Loader::readAntiRollBars() {
+  for (Table& b : root_.optionalTables("anti_roll_bars")) {
+    AntiRollBarSpec bar;
+    bar.name = b.string("name");
+    bar.line = b.line();
+    const std::string axle = b.choice("axle", {"F", "R"});
+    bar.left = axle == "F" ? 0 : 2;
+    bar.right = bar.left + 1;
+    // Its rate at the wheels, given directly or as the bar's torsional
+    // stiffness over the square of the wheel travel per radian of twist.
+    if (b.has("rate")) {
+      bar.rate = b.number("rate", Dimension::Stiffness, kStiffness);
+    } else {
+      const double torsion = b.number("torsional_stiffness", Dimension::AngularStiffness, kTorsion);
+      const double lever = b.number("lever", Dimension::Length, kPositiveLength);
+      bar.rate = torsion / (lever * lever);
+      b.require(bar.rate <= kStiffness.hi, "lever", "a lever giving a rate within " + kStiffness.text() + " N/m");
+    }
+    for (const AntiRollBarSpec& other : spec_.antiRollBars)
+      if (other.name == bar.name) b.fail("duplicate anti-roll bar '" + bar.name + "'", "name");
+    spec_.antiRollBars.push_back(bar);
+    b.finish();
+  }
+}
+
 void Loader::readSteeringAndDriveline() {
   Table st = root_.table("steering");
   const Side none;
@@ -484,6 +511,7 @@ VehicleSpec Loader::load() {
   readCutJoints();
   readSprings();
   readWheels();
+  readAntiRollBars();
   readSteeringAndDriveline();
   readAppearance();
   root_.finish();

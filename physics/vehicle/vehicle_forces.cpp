@@ -137,9 +137,30 @@ void VehicleForces::planarLoads(mb::Data& d) {
   for (int w = 0; w < 4; ++w) wheels_[w].modelLoad += w < 2 ? -pitch : pitch;
 }
 
+void VehicleForces::antiRollBars(mb::Data& d) {
+  const int ch = vehicle_.layout.chassis;
+  const Eigen::Vector3d up = d.R[ch].col(2);
+  for (const AntiRollBarSpec& bar : vehicle_.spec.antiRollBars) {
+    // A planar model's bar acts on the corners' deflection, suspension and
+    // tyre in series (PlanarLoads::barRate), the others' on the suspension travel.
+    const double f = vehicle_.planar ? vehicle_.planar->barRate[bar.left / 2] *
+                                           (wheelCentreTravel(vehicle_, d, bar.left) - wheelCentreTravel(vehicle_, d, bar.right))
+                                     : bar.rate * (suspensionTravel(vehicle_, d, bar.left) - suspensionTravel(vehicle_, d, bar.right));
+    // + f: the left wheel pushed down (out of bump), the chassis up there; the right the other way.
+    for (const auto& [w, sign] : {std::pair{bar.left, 1.0}, std::pair{bar.right, -1.0}}) {
+      const int spindle = vehicle_.layout.wheels[w].spindle;
+      const Eigen::Vector3d& centre = d.p[spindle];
+      mb::addWorldForce(d, spindle, centre, -sign * f * up);
+      mb::addWorldForce(d, ch, centre, sign * f * up);
+      if (vehicle_.planar) wheels_[w].modelLoad += sign * f;  // the tyre carries what the bar puts on its corner
+    }
+  }
+}
+
 void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   const double h = std::max(0.0, t - lastAccepted_);
   if (vehicle_.planar) planarLoads(d);
+  if (!vehicle_.spec.antiRollBars.empty()) antiRollBars(d);
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];

@@ -12,6 +12,9 @@
 // A planar model (no vertical motion) gives each tyre its normal load from
 // its load transfer instead of the tyre's deflection: see planarLoads.
 //
+// Anti-roll bars act between the wheel centres and the chassis, on the
+// suspension travel, whatever the rung.
+//
 // Drive torques react where the vehicle file says (chassis, carrier or nowhere).
 // Brakes hold without creep: the brake torque is a stiff torsional spring
 // (with damping) on the spin angle since the wheel last slipped, saturated
@@ -93,6 +96,9 @@ class VehicleForces final : public mb::ForceProvider {
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
   // go on the sprung body and the base, the loads into wheels_[w].modelLoad.
   void planarLoads(mb::Data& data);
+  // The anti-roll bars (AntiRollBarSpec): forces between each wheel centre
+  // and the chassis; on a planar model also its tyres' loads.
+  void antiRollBars(mb::Data& data);
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(wheels_[w].modelLoad) : std::nullopt;
   }

@@ -69,10 +69,8 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     out.camber[w] = -outward * std::asin(std::clamp(n.z(), -1.0, 1.0));
     out.toe[w] = -outward * out.steerAngle[w];
     out.Mz[w] = wc.out.Mz;
-    out.travel[w] = wheelCentreTravel(v, d, w);
+    out.travel[w] = suspensionTravel(v, d, w);
     if (v.planar) {
-      const PlanarLoads& P = *v.planar;
-      out.travel[w] = P.restTravel[w] + P.suspensionShare[w] * (out.travel[w] - P.restTravel[w]);
       out.springForce[w] = wc.cornerSpring;
       out.damperForce[w] = wc.cornerDamper;
     }

@@ -81,6 +81,18 @@ struct SteeringSpec {
   double maxRackAcceleration = 6.0;  // m/s^2
 };
 
+// An anti-roll bar between the two wheels of an axle: a torsion bar whose
+// twist is the difference of the wheels' suspension travel. Each wheel gets
+// F = rate (travel_left - travel_right) against its own travel, the chassis
+// the opposite at the wheel centres: no force in heave, a roll stiffness of
+// rate t^2 (t the track) in roll. Acts on every fidelity rung (vehicle_forces.h).
+struct AntiRollBarSpec {
+  std::string name;
+  int left = 0, right = 1;     // wheel indices (FL FR or RL RR)
+  double rate = 0;             // N/m at the wheel centres: torsional stiffness / lever^2
+  int line = 0;
+};
+
 // Where the reaction of a drive torque goes: an inboard differential reacts
 // on the chassis, a hub motor on the wheel carrier; the reference runs apply
 // an external torque to the spindle with no reaction at all.
@@ -92,6 +104,7 @@ struct VehicleSpec {
   std::vector<BodySpec> bodies;      // the first is the chassis (free joint)
   std::vector<CutJointSpec> cutJoints;
   std::vector<SpringSpec> springs;
+  std::vector<AntiRollBarSpec> antiRollBars;  // none on the reference sedan
   std::vector<WheelSpec> wheels;     // FL, FR, RL, RR
   SteeringSpec steering;
   double maxDriveTorque = 0;         // per driven wheel at full throttle, N m
