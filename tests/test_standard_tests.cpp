@@ -163,7 +163,8 @@ std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR
 TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
   for (const char* file : {"scenarios/standard/iso7401_step_steer_80.toml",
                            "scenarios/standard/fmvss126_sine_with_dwell_80.toml",
-                           "scenarios/standard/iso4138_constant_steer.toml"}) {
+                           "scenarios/standard/iso4138_constant_steer.toml",
+                           "scenarios/standard/iso4138_constant_radius_40m.toml"}) {
     const ScenarioSpec spec = loadScenarioFile(asset(file));
     ASSERT_NE(spec.standardTest, StandardTest::None) << file;
     Simulation sim(spec);
@@ -179,7 +180,7 @@ TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
       EXPECT_GT(m.yawRate.responseTime, 0.0);
       EXPECT_LT(m.yawRate.responseTime, m.ay.responseTime);  // yaw leads lateral acceleration
     }
-    if (spec.standardTest == StandardTest::Iso4138ConstantSteer) {
+    if (spec.standardTest == StandardTest::Iso4138ConstantSteer || spec.standardTest == StandardTest::Iso4138ConstantRadius) {
       // The sedan understeers, rolls out of the turn, and the wheelbase is
       // its hardpoints' (docs/reference-vehicle.md: 2.46 m).
       const SteadyStateMetrics m = iso4138ConstantSteer(h);
@@ -188,6 +189,27 @@ TEST(StandardTests, ShippedScenariosGiveTheirMetrics) {
       EXPECT_NEAR(h.wheelbase, 2.46, 0.001);
     }
   }
+}
+
+// The constant radius method: the same single-track car driven on a 40 m
+// circle, its steer delta = L / R + K a_y read off a 15:1 steering wheel.
+TEST(Iso4138, ConstantRadiusGivesTheSameGradient) {
+  const double deg = 180 / M_PI, L = 2.6, R = 40.0, U = 2.5, K = U / deg / 9.81;
+  TimeHistory h;
+  h.wheelbase = L;
+  h.steeringRatio = 15;
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = 0.01 * i, v = 4 + 0.3 * t, ay = v * v / R;
+    h.t.push_back(t);
+    h.speed.push_back(v);
+    h.yawRate.push_back(v / R);
+    h.ay.push_back(ay);
+    h.steer.push_back((L / R + K * ay) * deg * 15);
+    h.sideslip.push_back(0), h.roll.push_back(0), h.x.push_back(0), h.y.push_back(0), h.heading.push_back(0);
+  }
+  const SteadyStateMetrics m = iso4138ConstantSteer(h);
+  ASSERT_TRUE(m.valid) << m.why;
+  EXPECT_NEAR(m.understeerGradient, U, 1e-9);
 }
 
 // ISO 3888-2 (ISO 3888-2:2011 Table 1): 61 m in sections of 12 / 13.5 / 11 /

@@ -18,7 +18,8 @@ void standardTestsSection(std::ostream& md) {
      << vehicle::describe(vehicle::vehicleSheet(sedan)) << "```\n\n"
      << "The shipped standard tests (definitions and sources: docs/STANDARD_TESTS.md), at the paper's setting:\n\n";
   for (const char* file : {"standard/iso7401_step_steer_80.toml", "standard/fmvss126_sine_with_dwell_80.toml",
-                           "standard/iso4138_constant_steer.toml", "standard/iso3888_2_obstacle_avoidance_60.toml"}) {
+                           "standard/iso4138_constant_steer.toml", "standard/iso4138_constant_radius_40m.toml",
+                           "standard/iso3888_2_obstacle_avoidance_60.toml"}) {
     const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
     scenario::Simulation sim(spec);
     const scenario::RunResult r = scenario::runScenario(sim, {});

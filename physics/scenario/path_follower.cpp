@@ -15,8 +15,9 @@ double PathFollower::steer(double x, double y, double yaw, double v, double yawR
     gain_ += a * (ratio - gain_);
   }
   const double L = std::max(p_.minLookAhead, p_.lookAheadTime * std::abs(v));
-  // Target on the path L ahead along x (the course runs along +x).
-  const double tx = x + L * std::cos(yaw), ty = path_(tx);
+  // The target on the path L ahead (driver_paths.h).
+  const Eigen::Vector2d target = target_(x, y, yaw, L);
+  const double tx = target.x(), ty = target.y();
   // Pure pursuit: curvature 2 sin(eta) / L with eta the angle to the target in the vehicle frame.
   const double dx = tx - x, dy = ty - y;
   const double eta = std::atan2(dy, dx) - yaw;

@@ -8,6 +8,8 @@
 
 #include <functional>
 
+#include "scenario/driver_paths.h"
+
 namespace bdfcar::scenario {
 
 struct PathFollowerParams {
@@ -20,7 +22,7 @@ struct PathFollowerParams {
 
 class PathFollower {
  public:
-  PathFollower(const PathFollowerParams& p, std::function<double(double)> pathY) : p_(p), path_(std::move(pathY)) {}
+  PathFollower(const PathFollowerParams& p, PathTarget target) : p_(p), target_(std::move(target)) {}
   // Normalised steering [-1, 1] for a vehicle at (x, y) with heading yaw,
   // speed v and yaw rate r; dt is the time since the last call.
   double steer(double x, double y, double yaw, double v, double yawRate, double dt);
@@ -38,7 +40,7 @@ class PathFollower {
 
  private:
   PathFollowerParams p_;
-  std::function<double(double)> path_;
+  PathTarget target_;
   double gain_ = 1.0;           // curvature asked / curvature obtained
   double lastCurvature_ = 0.0;  // curvature asked for at the last call
 };

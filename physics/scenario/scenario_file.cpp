@@ -48,14 +48,17 @@ std::string resolveAsset(Table& t, const std::string& key) {
   return p.string();
 }
 
-// The columns of a CSV file of inputs (a header of names, then rows of
-// numbers): `time` and `column` as a table signal; errors name the file and line.
-void readCsvSignal(Table& t, const std::string& defaultColumn, const Range& levels, SignalSpec& s) {
-  const std::filesystem::path rel = t.string("file");
-  const std::filesystem::path path = rel.is_absolute() ? rel : std::filesystem::path(t.folderOf("file")) / rel;
-  const std::string column = t.string("column", defaultColumn), timeColumn = t.string("time_column", "time_s");
-  std::ifstream in(path);
-  if (!in) t.fail("cannot read the CSV file '" + path.string() + "'", "file");
+// Columns of a CSV file named by `fileKey` (a header line of names, then
+// rows of numbers), each column given as (its name, the key that named it);
+// errors name the table's key, or the CSV's own file and line.
+std::vector<std::vector<double>> readCsvColumns(Table& t, const std::string& fileKey,
+                                                const std::vector<std::pair<std::string, std::string>>& columns,
+                                                std::string& path) {
+  const std::filesystem::path rel = t.string(fileKey);
+  const std::filesystem::path p = rel.is_absolute() ? rel : std::filesystem::path(t.folderOf(fileKey)) / rel;
+  path = p.string();
+  std::ifstream in(p);
+  if (!in) t.fail("cannot read the CSV file '" + path + "'", fileKey);
   std::string line;
   std::getline(in, line);
   std::vector<std::string> names;
@@ -63,38 +66,52 @@ void readCsvSignal(Table& t, const std::string& defaultColumn, const Range& leve
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     names.push_back(line);
   }
-  auto index = [&](const std::string& name, const char* key) {
+  std::vector<std::size_t> index;
+  for (const auto& [name, key] : columns) {
     const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end()) t.fail("the CSV file '" + path.string() + "' has no column '" + name + "'", key);
-    return static_cast<std::size_t>(it - names.begin());
-  };
-  const std::size_t ti = index(timeColumn, "time_column"), vi = index(column, "column");
+    if (it == names.end()) t.fail("the CSV file '" + path + "' has no column '" + name + "'", key);
+    index.push_back(static_cast<std::size_t>(it - names.begin()));
+  }
+  std::vector<std::vector<double>> out(columns.size());
   int row = 1;
   while (std::getline(in, line)) {
     ++row;
     if (line.empty() || line == "\r") continue;
     std::vector<std::string> f;
     for (std::stringstream ss(line); std::getline(ss, line, ',');) f.push_back(line);
-    auto number = [&](std::size_t i, const std::string& name) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::size_t i = index[c];
       char* end = nullptr;
       const double x = i < f.size() ? std::strtod(f[i].c_str(), &end) : std::nan("");
       if (i >= f.size() || end == f[i].c_str() || !std::isfinite(x))
-        throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + name +
+        throw config::ConfigError(path + ":" + std::to_string(row) + ": column '" + columns[c].first +
                                   "': expected a finite number" + (i < f.size() ? ", got \"" + f[i] + "\"" : ""));
-      return x;
-    };
-    const double time = number(ti, timeColumn), value = number(vi, column);
-    if (!s.times.empty() && !(time > s.times.back()))
-      throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + timeColumn +
-                                "': expected strictly increasing times");
-    if (!kTime.contains(time) || !levels.contains(value))
-      throw config::ConfigError(path.string() + ":" + std::to_string(row) + ": column '" + column + "': expected " +
-                                "a value " + levels.text() + " at a time " + kTime.text());
-    s.times.push_back(time);
-    s.values.push_back(value);
-    if (s.times.size() > 10000000) t.fail("the CSV file '" + path.string() + "' has more than 1e7 rows", "file");
+      out[c].push_back(x);
+    }
+    if (out[0].size() > 10000000) t.fail("the CSV file '" + path + "' has more than 1e7 rows", fileKey);
   }
-  if (s.times.empty()) t.fail("the CSV file '" + path.string() + "' has no rows", "file");
+  if (out[0].empty()) t.fail("the CSV file '" + path + "' has no rows", fileKey);
+  return out;
+}
+
+// A signal from a CSV file's time and value columns.
+void readCsvSignal(Table& t, const std::string& defaultColumn, const Range& levels, SignalSpec& s) {
+  const std::string column = t.string("column", defaultColumn), timeColumn = t.string("time_column", "time_s");
+  std::string path;
+  const auto cols = readCsvColumns(t, "file", {{timeColumn, "time_column"}, {column, "column"}}, path);
+  for (std::size_t r = 0; r < cols[0].size(); ++r) {
+    const double time = cols[0][r], value = cols[1][r];
+    if (r > 0 && !(time > cols[0][r - 1]))
+      t.fail("the CSV file '" + path + "': expected strictly increasing times in column '" + timeColumn + "' (row " +
+                 std::to_string(r + 1) + ")",
+             "time_column");
+    if (!kTime.contains(time) || !levels.contains(value))
+      t.fail("the CSV file '" + path + "', row " + std::to_string(r + 1) + ": expected a value " + levels.text() +
+                 " in column '" + column + "' at a time " + kTime.text(),
+             "column");
+  }
+  s.times = cols[0];
+  s.values = cols[1];
 }
 
 // A signal table; steering (`steering` true) may be in engineering units.
@@ -356,13 +373,33 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     c->finish();
   }
   if (auto d = root.optionalTable("driver")) {
-    const std::string type = d->string("type");
-    if (type != "path_follower") d->fail("unknown driver '" + type + "': expected path_follower", "type");
-    s.pathFollower.enabled = true;
-    s.pathFollower.lookAheadTime = d->number("look_ahead_time", Dimension::Time, kLookAheadTime, s.pathFollower.lookAheadTime);
-    s.pathFollower.minLookAhead = d->number("min_look_ahead", Dimension::Length, kLookAhead, s.pathFollower.minLookAhead);
+    const std::string type = d->choice("type", {"path_follower", "path", "circle"});
+    PathFollowerSpec& f = s.pathFollower;
+    f.enabled = true;
+    f.lookAheadTime = d->number("look_ahead_time", Dimension::Time, kLookAheadTime, f.lookAheadTime);
+    f.minLookAhead = d->number("min_look_ahead", Dimension::Length, kLookAhead, f.minLookAhead);
+    if (type == "path") {
+      f.path = PathFollowerSpec::Path::Polyline;
+      std::string path;
+      const auto cols = readCsvColumns(*d, "file", {{d->string("x_column", "x_m"), "x_column"},
+                                                    {d->string("y_column", "y_m"), "y_column"}}, path);
+      for (std::size_t r = 0; r < cols[0].size(); ++r) {
+        const Eigen::Vector2d p(cols[0][r], cols[1][r]);
+        if (!kPosition.contains(p.x()) || !kPosition.contains(p.y()))
+          d->fail("the path '" + path + "', row " + std::to_string(r + 1) + ": a point beyond " + kPosition.text() + " m", "file");
+        // Repeated points (a car at rest in a telemetry) add nothing.
+        if (f.points.empty() || (p - f.points.back()).norm() > 1e-6) f.points.push_back(p);
+      }
+      if (f.points.size() < 2) d->fail("the path '" + path + "' needs at least two distinct points", "file");
+      f.closed = d->boolean("closed", false);
+    } else if (type == "circle") {
+      f.path = PathFollowerSpec::Path::Circle;
+      f.radius = d->number("radius", Dimension::Length, Range{1.0, 1e4});
+      f.direction = d->choice("direction", {"left", "right"}, "left") == "left" ? 1.0 : -1.0;
+    }
     d->finish();
-    if (!s.course.iso3888) root.fail("a path_follower driver needs a [course] to follow", "driver");
+    if (type == "path_follower" && !s.course.iso3888)
+      root.fail("a path_follower driver needs a [course] to follow (or type = \"path\" or \"circle\")", "driver");
     if (s.steering.kind != SignalSpec::Kind::None) root.fail("give either [steering] or a path_follower [driver], not both", "driver");
   }
   if (auto c = root.optionalTable("check")) s.check = readCheck(*c);
@@ -371,8 +408,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     if (test == "iso7401_step_steer") s.standardTest = StandardTest::Iso7401StepSteer;
     else if (test == "fmvss126_sine_with_dwell") s.standardTest = StandardTest::Fmvss126SineWithDwell;
     else if (test == "iso4138_constant_steer") s.standardTest = StandardTest::Iso4138ConstantSteer;
+    else if (test == "iso4138_constant_radius") s.standardTest = StandardTest::Iso4138ConstantRadius;
     else m->fail("unknown standard test '" + test +
-                     "': expected iso7401_step_steer, fmvss126_sine_with_dwell or iso4138_constant_steer",
+                     "': expected iso7401_step_steer, fmvss126_sine_with_dwell, iso4138_constant_steer or "
+                     "iso4138_constant_radius",
                  "test");
     m->finish();
   }

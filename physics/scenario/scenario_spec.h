@@ -58,6 +58,13 @@ struct PathFollowerSpec {
   bool enabled = false;
   double lookAheadTime = 0.9;  // s
   double minLookAhead = 5.0;   // m
+  // What it follows (driver_paths.h): the course's driving line, a polyline
+  // (a CSV of x, y), or a circle through the start.
+  enum class Path { Course, Polyline, Circle } path = Path::Course;
+  std::vector<Eigen::Vector2d> points;
+  bool closed = false;
+  double radius = 0;           // m
+  double direction = 1;        // +1 left (counter-clockwise), -1 right
 };
 
 // What a hard case must show ([check] in a scenario file; `bdfcar check`).
@@ -104,7 +111,7 @@ AutoRungs autoRungs(double errorBudget);
 
 // A standard test the scenario is ([metrics] test): its metrics are
 // computed after the run (scenario/standard_tests.h).
-enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell, Iso4138ConstantSteer };
+enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell, Iso4138ConstantSteer, Iso4138ConstantRadius };
 
 struct ScenarioSpec {
   std::string name, sourceFile;

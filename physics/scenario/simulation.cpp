@@ -158,8 +158,29 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     p.wheelbase = veh.spec.geometry.wheelbase;
     // Steering ratio from the kinematics of the data.
     p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(veh));
-    // Keep 40 % of each lane's spare width for the tracking error.
-    follower_.emplace(p, [c = *world_->course, w = vehicleWidth(veh)](double x) { return c.drivingLineY(x, w, 0.6); });
+    const PathFollowerSpec& f = spec.pathFollower;
+    PathTarget target;
+    if (f.path == PathFollowerSpec::Path::Course) {
+      // Keep 40 % of each lane's spare width for the tracking error; the course runs along +x.
+      target = [c = *world_->course, w = vehicleWidth(veh)](double x, double, double yaw, double L) {
+        const double tx = x + L * std::cos(yaw);
+        return Eigen::Vector2d(tx, c.drivingLineY(tx, w, 0.6));
+      };
+    } else if (f.path == PathFollowerSpec::Path::Polyline) {
+      target = [path = PolylinePath(f.points, f.closed)](double x, double y, double, double L) {
+        return path.target(x, y, L);
+      };
+    } else {
+      // The circle through the start, its centre to the left (or right) of the start heading.
+      const double side = f.direction;
+      CirclePath c;
+      c.radius = f.radius;
+      c.direction = side;
+      c.centre = Eigen::Vector2d(spec.startX, spec.startY) +
+                 side * f.radius * Eigen::Vector2d(-std::sin(spec.startHeading), std::cos(spec.startHeading));
+      target = [c](double x, double y, double, double L) { return c.target(x, y, L); };
+    }
+    follower_.emplace(p, target);
   }
 }
 

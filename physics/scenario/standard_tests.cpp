@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vehicle/motion_ratio.h"
+
 namespace bdfcar::scenario {
 
 namespace {
@@ -172,7 +174,10 @@ TimeHistory timeHistory(const RunResult& r, double steeringWheelFull, double whe
 TimeHistory timeHistory(const RunResult& r, const vehicle::Vehicle& v) {
   const auto& c = v.layout.wheelCentreAtDesign;
   const double wheelbase = 0.5 * (c[0].x() + c[1].x()) - 0.5 * (c[2].x() + c[3].x());
-  return timeHistory(r, v.spec.steering.steeringWheelFull, wheelbase);
+  TimeHistory h = timeHistory(r, v.spec.steering.steeringWheelFull, wheelbase);
+  const double perSteer = vehicle::roadWheelAnglePerSteer(v);  // 0 where the model does not assemble
+  if (perSteer > 0) h.steeringRatio = v.spec.steering.steeringWheelFull / perSteer;
+  return h;
 }
 
 namespace {
@@ -205,7 +210,9 @@ SteadyStateMetrics iso4138ConstantSteer(const TimeHistory& h, double ayLow, doub
     // Left and right turns alike: signs taken with the turn's.
     const double turn = h.ay[i] > 0 ? 1.0 : -1.0;
     ay.push_back(a);
-    curvature.push_back(turn * h.wheelbase * h.yawRate[i] / h.speed[i]);
+    // delta - L / R (delta: 0 when no steering ratio is known, the steer being held).
+    const double delta = h.steeringRatio > 0 ? h.steer[i] / h.steeringRatio * 3.14159265358979323846 / 180.0 : 0.0;
+    curvature.push_back(turn * (h.wheelbase * h.yawRate[i] / h.speed[i] - delta));
     beta.push_back(turn * h.sideslip[i]);
     roll.push_back(turn * h.roll[i]);
     steerSum += h.steer[i];
@@ -225,14 +232,14 @@ SteadyStateMetrics iso4138ConstantSteer(const TimeHistory& h, double ayLow, doub
 }
 
 std::string describe(const SteadyStateMetrics& m) {
-  if (!m.valid) return "ISO 4138 constant steering-wheel angle: no metrics (" + m.why + ")\n";
+  if (!m.valid) return "ISO 4138 " + m.method + ": no metrics (" + m.why + ")\n";
   char buf[600];
   std::snprintf(buf, sizeof buf,
-                "ISO 4138 constant steering-wheel angle (%.1f deg held; %d samples with a_y in [%.1f, %.1f] m/s^2, "
+                "ISO 4138 %s (steering wheel at %.1f deg on average; %d samples with a_y in [%.1f, %.1f] m/s^2, "
                 "largest a_y %.2f m/s^2):\n"
                 "  understeer gradient %.3f deg/g, sideslip gradient %.4f deg/(m/s^2), roll gradient %.4f "
                 "deg/(m/s^2)\n",
-                m.steer, m.samples, m.ayLow, m.ayHigh, m.maxAy, m.understeerGradient, m.sideslipGradient,
+                m.method.c_str(), m.steer, m.samples, m.ayLow, m.ayHigh, m.maxAy, m.understeerGradient, m.sideslipGradient,
                 m.rollGradient);
   return buf;
 }
@@ -265,8 +272,9 @@ StandardTestReport standardTestReport(StandardTest test, const TimeHistory& h) {
         r.metrics.push_back({p + "_overshoot", x->overshoot});
       }
     }
-  } else if (test == StandardTest::Iso4138ConstantSteer) {
-    const SteadyStateMetrics m = iso4138ConstantSteer(h);
+  } else if (test == StandardTest::Iso4138ConstantSteer || test == StandardTest::Iso4138ConstantRadius) {
+    SteadyStateMetrics m = iso4138ConstantSteer(h);
+    m.method = test == StandardTest::Iso4138ConstantRadius ? "constant radius" : "constant steering-wheel angle";
     r = {m.valid, describe(m), toJson(m), {{"iso4138_valid", m.valid ? 1.0 : 0.0}}};
     if (m.valid)
       r.metrics.insert(r.metrics.end(), {{"iso4138_understeer_gradient_deg_per_g", m.understeerGradient},

@@ -33,6 +33,7 @@ struct TimeHistory {
   std::vector<double> speed;   // m/s
   std::vector<double> sideslip, roll;  // rad
   double wheelbase = 0;        // m (ISO 4138)
+  double steeringRatio = 0;    // steering-wheel angle per road-wheel angle at small angles (0: unknown)
 };
 
 // One response (yaw rate or lateral acceleration) to a step.
@@ -73,15 +74,19 @@ struct SineWithDwellMetrics {
 // regulation's 5 deg of handwheel angle when steer is in degrees).
 SineWithDwellMetrics fmvss126SineWithDwell(const TimeHistory& h, double beginThreshold = 5.0);
 
-// ISO 4138 (constant steering-wheel angle): over the samples with a_y in
-// [ayLow, ayHigh] and moving, least-squares slopes against a_y of
-//  - L / R (R = v / r, L the wheelbase): the understeer gradient is minus
-//    that slope, since the steer is constant and delta = L / R + U a_y;
+// ISO 4138 (constant steering-wheel angle or constant radius): over the
+// samples with a_y in [ayLow, ayHigh] and moving, least-squares slopes
+// against a_y of
+//  - delta - L / R (delta the steering-wheel angle over the steering ratio,
+//    R = v / r, L the wheelbase): the understeer gradient U, since
+//    delta = L / R + U a_y. With no steering ratio given, delta is taken as
+//    constant (the constant steering-wheel angle method);
 //  - the sideslip angle and the roll angle.
 struct SteadyStateMetrics {
   bool valid = false;
+  std::string method = "constant steering-wheel angle";
   std::string why;
-  double steer = 0;                // steering-wheel angle held, as the input (deg)
+  double steer = 0;                // steering-wheel angle, mean over the window, as the input (deg)
   double understeerGradient = 0;   // deg/g of road-wheel angle (+ understeer)
   double sideslipGradient = 0;     // deg per m/s^2
   double rollGradient = 0;         // deg per m/s^2 (+ rolling out of the turn)

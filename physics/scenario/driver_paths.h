@@ -1,0 +1,44 @@
+// What the path-following driver (path_follower.h) steers along: the point
+// of a reference path a look-ahead distance ahead of the car.
+//  - a lane-change course's driving line (iso3888_course.h), which runs
+//    along +x: the point L ahead along x;
+//  - any path given as a polyline of (x, y) points (a CSV file), open or
+//    closed: the point L further along the polyline than the car's nearest
+//    point on it (the first nearest, searched over the whole polyline, so
+//    the driver keeps no state of its own: a path that crosses itself may
+//    be taken at the crossing);
+//  - a circle of a given radius (ISO 4138's constant radius): the point L
+//    further along the arc, counter-clockwise for a left turn.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+namespace bdfcar::scenario {
+
+// (x, y, yaw, look-ahead distance) -> the target point.
+using PathTarget = std::function<Eigen::Vector2d(double x, double y, double yaw, double lookAhead)>;
+
+class PolylinePath {
+ public:
+  // At least two points, no two consecutive ones equal (the loader checks).
+  PolylinePath(std::vector<Eigen::Vector2d> points, bool closed);
+  Eigen::Vector2d target(double x, double y, double lookAhead) const;
+  double length() const { return s_.back(); }
+
+ private:
+  Eigen::Vector2d at(double s) const;  // the point at arc length s (wrapped on a closed path, clamped on an open one)
+  std::vector<Eigen::Vector2d> p_;
+  std::vector<double> s_;  // arc length at each point
+  bool closed_;
+};
+
+struct CirclePath {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 1;
+  double direction = 1;  // +1 counter-clockwise (turning left), -1 clockwise
+  Eigen::Vector2d target(double x, double y, double lookAhead) const;
+};
+
+}  // namespace bdfcar::scenario
