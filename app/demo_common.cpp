@@ -21,6 +21,10 @@ void addDemoOptions(CLI::App& cmd, DemoOptions& o) {
         if (!parseSize(s, o.width, o.height)) throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 1280x720");
       },
       "Frame size, e.g. 1280x720");
+  cmd.add_flag("--no-frames{false}", o.frames,
+               "Headless: the video only (raw frames piped to ffmpeg), no PNG frames");
+  cmd.add_option("--camera", o.camera, "Headless: the camera of the frames and video (chase, hood, orbit, top-down)")
+      ->check(CLI::IsMember({"chase", "hood", "orbit", "top-down"}));
 }
 
 std::string demoTelemetryPath(const DemoOptions& o) {

@@ -16,6 +16,8 @@ struct DemoOptions {
   bool headless = false;   // bdfcar: render headless even with a display
   double fps = 30;
   int width = 1280, height = 720;
+  bool frames = true;            // headless: PNG frames beside the video (--no-frames: video only)
+  std::string camera = "chase";  // headless: the camera the frames are drawn from
 };
 
 void addDemoOptions(CLI::App& cmd, DemoOptions& o);

@@ -29,13 +29,19 @@ void printFrameStats(const FramesResult& r) {
 struct RenderArgs {
   std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry;
   double fps = 30;
+  bool noFrames = false;  // video only: the raw frames go to ffmpeg, no PNG
   ScenarioOverrides overrides;
 };
 
 int runRender(const RenderArgs& a) {
+  if (a.noFrames ? a.video.empty() : a.outDir.empty()) {
+    std::fprintf(stderr, "error: %s\n", a.noFrames ? "--no-frames needs --video FILE (the frames go only there)"
+                                                   : "give --out DIR for the frames (or --no-frames --video FILE)");
+    return kExitUsage;
+  }
   scenario::ScenarioSpec spec = loadScenario(a.scenario, a.overrides);
   FramesOptions fo;
-  fo.outDir = a.outDir;
+  fo.outDir = a.noFrames ? "" : a.outDir;
   fo.video = a.video;
   fo.fps = a.fps;
   fo.camera = a.camera;
@@ -66,14 +72,19 @@ int runHeadlessDemo(const DemoOptions& o) {
   InterruptGuard interrupts;
   DriveSession session(spec, so);
   FramesOptions fo;
-  fo.outDir = (std::filesystem::path(o.outDir) / "frames").string();
+  fo.outDir = o.frames ? (std::filesystem::path(o.outDir) / "frames").string() : "";
   fo.fps = o.fps;
   fo.width = o.width;
   fo.height = o.height;
-  if (ffmpegAvailable())
+  fo.camera = o.camera;
+  if (ffmpegAvailable()) {
     fo.video = (std::filesystem::path(o.outDir) / "demo.mp4").string();
-  else
+  } else if (!o.frames) {
+    std::fprintf(stderr, "error: --no-frames needs ffmpeg for the video, and ffmpeg is not installed\n");
+    return kExitUsage;
+  } else {
     std::fprintf(stderr, "note: ffmpeg is not installed: frames only, no video\n");
+  }
   const FramesResult r = renderFrames(session, fo);
   session.closeOutputs();
   printFrameStats(r);
@@ -81,7 +92,7 @@ int runHeadlessDemo(const DemoOptions& o) {
     std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
     return interruptExitStatus();
   }
-  std::printf("frames: %s/frame_*.png\n", fo.outDir.c_str());
+  if (!fo.outDir.empty()) std::printf("frames: %s/frame_*.png\n", fo.outDir.c_str());
   if (!fo.video.empty()) std::printf("video: %s\n", fo.video.c_str());
   return finishDemo(session, o);
 }
@@ -90,10 +101,12 @@ int runHeadlessDemo(const DemoOptions& o) {
 
 void addHeadlessCommands(CLI::App& app, CommandList& commands) {
   {
-    CLI::App* cmd = app.add_subcommand("render", "Render a scenario to PNG frames (and a video) with OSMesa");
+    CLI::App* cmd = app.add_subcommand("render", "Render a scenario to PNG frames and/or a video with OSMesa");
     auto a = std::make_shared<RenderArgs>();
     cmd->add_option("scenario", a->scenario, "Scenario file")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--out,-o", a->outDir, "Folder for frame_NNNNN.png")->required();
+    cmd->add_option("--out,-o", a->outDir, "Folder for frame_NNNNN.png (not with --no-frames)");
+    cmd->add_flag("--no-frames", a->noFrames,
+                  "Video only: the raw frames are piped to ffmpeg (--video), no PNG is encoded or written");
     cmd->add_option("--fps", a->fps, "Frames per second of simulated time")->check(CLI::Range(1.0, 240.0));
     cmd->add_option("--size", a->size, "Frame size, e.g. 1280x720");
     cmd->add_option("--video", a->video, "Also write a video (through ffmpeg), e.g. run.mp4");

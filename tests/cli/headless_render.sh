@@ -18,5 +18,13 @@ if command -v ffprobe > /dev/null; then
   d=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "$out/run.mp4")
   awk -v d="$d" 'BEGIN { exit !(d > 1.85 && d < 2.25) }' || { echo "video lasts $d s, expected 2 s"; exit 1; }
   echo "ok: video $d s"
+  # Video only (--no-frames): no PNG written, the same duration, from another camera.
+  mkdir "$out/novideo"
+  env -u DISPLAY -u WAYLAND_DISPLAY "$1" render "$2" --no-frames --camera top-down --size 320x180 --fps 10 \
+    --duration 2 --video "$out/novideo/run.mp4" > /dev/null
+  [ "$(ls "$out/novideo" | wc -l)" -eq 1 ] || { echo "--no-frames wrote more than the video: $(ls "$out/novideo")"; exit 1; }
+  d=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "$out/novideo/run.mp4")
+  awk -v d="$d" 'BEGIN { exit !(d > 1.85 && d < 2.25) }' || { echo "video-only lasts $d s, expected 2 s"; exit 1; }
+  echo "ok: video only $d s"
 fi
 echo "ok: $n frames"
