@@ -76,12 +76,15 @@ void printDerived(const vehicle::Vehicle& linkage, vehicle::Fidelity f) {
   std::printf("%s", figures.c_str());
 }
 
-int runInfo(const std::string& path, const std::string& fidelity) {
+int runInfo(const std::string& path, const std::string& fidelity, const std::vector<std::string>& set) {
   if (isTerrainFile(path)) {
     if (!fidelity.empty()) throw std::runtime_error("--fidelity applies to a vehicle file, not to the terrain file " + path);
+    if (!set.empty()) throw std::runtime_error("--set applies to a vehicle file, not to the terrain file " + path);
     return runTerrainInfo(path);
   }
-  const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path));
+  std::vector<config::Setting> settings;
+  for (const std::string& x : set) settings.push_back(config::parseSetting(x));
+  const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path, settings));
   const mb::Model& m = v.model;
   std::printf("%s (%s)\n", v.spec.name.c_str(), path.c_str());
   if (!v.spec.description.empty()) std::printf("  %s\n", v.spec.description.c_str());
@@ -145,7 +148,14 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--fidelity", *fidelity,
                   "Also derive this model from the vehicle and print it with its check against the linkage")
       ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
-  commands.push_back({cmd, [path, fidelity] { return reportErrors([&] { return runInfo(*path, *fidelity); }); }});
+  auto set = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("--set", *set,
+                  "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000; docs/VEHICLES.md), checked "
+                  "as in the file: the sheet of a variant without editing the file. Repeatable")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("KEY=VALUE");
+  commands.push_back({cmd, [path, fidelity, set] { return reportErrors([&] { return runInfo(*path, *fidelity, *set); }); }});
 }
 
 }  // namespace bdfcar::app
