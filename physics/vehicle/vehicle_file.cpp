@@ -41,6 +41,9 @@ const Range kTorque{0.0, 1e6};                            // N m, brakes and dri
 const Range kRackTravel{-1.0, 1.0};                       // m at full steering input
 const Range kSteeringWheelAngle{0.0, 100.0, true, false}; // rad at full steering input
 const Range kDragArea{0.0, 100.0};                        // 0.5 rho Cd A, N s^2/m^2
+const Range kResponseTime{0.005, 1.0};                    // s, the steering system's
+const Range kRackSpeed{0.0, 5.0, true, false};            // m/s
+const Range kRackAcceleration{0.0, 1000.0, true, false};  // m/s^2
 const Range kColour{0.0, 1.0};
 
 // One copy of a (possibly mirrored) item: the side suffix and the reflection.
@@ -444,13 +447,11 @@ void Loader::readSteeringAndDriveline() {
   spec_.steering.steeringWheelFull = st.number("steering_wheel_angle_full", Dimension::Angle, kSteeringWheelAngle);
   st.require(spec_.steering.rackTravelFull != 0, "rack_travel_full", "a non-zero rack travel (m) at full input");
   SteeringSpec& sys = spec_.steering;
-  sys.responseTime = st.number("response_time", Dimension::Time, sys.responseTime);
-  st.require(sys.responseTime >= 0.005 && sys.responseTime <= 1.0, "response_time", "a response time in [5 ms, 1 s]");
-  sys.maxRackSpeed = st.number("max_rack_speed", Dimension::Speed, sys.maxRackSpeed);
-  st.require(sys.maxRackSpeed > 0 && sys.maxRackSpeed <= 5.0, "max_rack_speed", "a rack speed in (0, 5] m/s");
-  sys.maxRackAcceleration = st.number("max_rack_acceleration", Dimension::Acceleration, sys.maxRackAcceleration);
-  st.require(sys.maxRackAcceleration > 0 && sys.maxRackAcceleration <= 1000.0, "max_rack_acceleration",
-             "a rack acceleration in (0, 1000] m/s^2");
+  // Range reads: a refused value is shown in the message.
+  sys.responseTime = st.number("response_time", Dimension::Time, kResponseTime, sys.responseTime);
+  sys.maxRackSpeed = st.number("max_rack_speed", Dimension::Speed, kRackSpeed, sys.maxRackSpeed);
+  sys.maxRackAcceleration =
+      st.number("max_rack_acceleration", Dimension::Acceleration, kRackAcceleration, sys.maxRackAcceleration);
   st.finish();
   if (auto d = root_.optionalTable("driveline")) {
     spec_.maxDriveTorque = d->number("max_torque", Dimension::Torque, kTorque);
