@@ -7,6 +7,7 @@
 
 #include "cli_errors.h"
 #include "commands.h"
+#include "scenario_overrides.h"
 #include "config/toml_reader.h"
 #include "multibody/model.h"
 #include "multibody/model_error.h"
@@ -149,12 +150,9 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
                   "Also derive this model from the vehicle and print it with its check against the linkage")
       ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
   auto set = std::make_shared<std::vector<std::string>>();
-  cmd->add_option("--set", *set,
-                  "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000; docs/VEHICLES.md), checked "
-                  "as in the file: the sheet of a variant without editing the file. Repeatable")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-      ->type_name("KEY=VALUE");
+  addSetOption(*cmd, *set,
+               "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000; docs/VEHICLES.md), checked "
+               "as in the file: the sheet of a variant without editing the file. Repeatable");
   commands.push_back({cmd, [path, fidelity, set] { return reportErrors([&] { return runInfo(*path, *fidelity, *set); }); }});
 }
 

@@ -29,11 +29,15 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
                "The paper's Newton as published: the fixed count only, no Jacobian refresh or rescue "
                "when it stops contracting (Tables 3 and 4)");
   cmd.add_option("--settle", ov.settle, "Settling time before the manoeuvre, s")->check(CLI::Range(0.0, 1e4));
-  cmd.add_option("--set", ov.settings,
-                 "KEY=VALUE: set a key of the scenario (start.speed=\"80 km/h\", fidelity.suspension=planar) or, "
-                 "prefixed vehicle., of its vehicle (vehicle.springs[0].damping=9000); keys are dotted paths with [N] "
-                 "for array elements, values TOML (a bare word is a string), checked as in the files "
-                 "(docs/SCENARIOS.md, docs/VEHICLES.md). Repeatable; later ones win")
+  addSetOption(cmd, ov.settings,
+               "KEY=VALUE: set a key of the scenario (start.speed=\"80 km/h\", fidelity.suspension=planar) or, "
+               "prefixed vehicle., of its vehicle (vehicle.springs[0].damping=9000); keys are dotted paths with [N] "
+               "for array elements, values TOML (a bare word is a string), checked as in the files "
+               "(docs/SCENARIOS.md, docs/VEHICLES.md). Repeatable; later ones win");
+}
+
+void addSetOption(CLI::App& cmd, std::vector<std::string>& settings, const std::string& help) {
+  cmd.add_option("--set", settings, help)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->type_name("KEY=VALUE");

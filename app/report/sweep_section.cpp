@@ -36,12 +36,7 @@ void sweepSection(std::ostream& md, const std::string& imageDir) {
   std::ifstream in(s.summaryCsv);
   std::string header;
   std::getline(in, header);
-  auto split = [](const std::string& line) {
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
-    return f;
-  };
+  auto split = [](const std::string& line) { return csvFields(line); };
   const std::vector<std::string> head = split(header);
   auto col = [&](const std::string& n) {
     for (size_t i = 0; i < head.size(); ++i)

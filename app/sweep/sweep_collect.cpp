@@ -12,11 +12,8 @@
 
 namespace bdfcar::app {
 
-namespace {
-
 using Row = std::vector<std::string>;
 
-// One CSV line into fields ("" quoting as sweep_jobs.cpp writes it).
 Row csvFields(const std::string& line) {
   Row out(1);
   bool quoted = false;
@@ -51,6 +48,8 @@ std::string csvLine(const Row& r) {
   }
   return out;
 }
+
+namespace {
 
 std::vector<Row> readCsv(const std::string& path) {
   std::ifstream in(path);

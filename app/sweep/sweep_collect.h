@@ -6,8 +6,14 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace bdfcar::app {
+
+// The sweep files' CSV: a field is quoted ("" for a quote) when it holds a
+// comma, a quote or a line break. One line into fields, and fields into one line.
+std::vector<std::string> csvFields(const std::string& line);
+std::string csvLine(const std::vector<std::string>& fields);
 
 struct SweepSummary {
   int cases = 0, ok = 0, failed = 0, missing = 0;  // failed: the run failed (ok = 0); missing: no metrics file

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "scenario/row_file.h"
+#include "sweep/sweep_collect.h"
 
 namespace bdfcar::app {
 
@@ -21,14 +22,6 @@ std::string caseCommand(const std::string& bdfcar, const SweepLayout& out, const
 
 namespace {
 
-// A CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
 void writeFile(const std::string& path, const std::string& text) {
   scenario::RowFile f(path);
   f.append(text);
@@ -42,13 +35,15 @@ void writeSweepJobs(const std::string& bdfcar, const SweepLayout& out, const Swe
   std::error_code ec;
   std::filesystem::create_directories(out.dir + "/cases", ec);
   if (ec) throw scenario::OutputError(out.dir + ": cannot create the sweep's folder (" + ec.message() + ")");
-  std::string table = "case,test";
-  for (const SweepVariable& v : spec.vary) table += "," + csvField(v.label);
+  std::vector<std::string> head = {"case", "test"};
+  for (const SweepVariable& v : spec.vary) head.push_back(v.label);
+  std::string table = csvLine(head);
   table += "\n";
   std::string jobs;
   for (const SweepCase& c : cases) {
-    table += c.id + "," + csvField(std::filesystem::path(c.test).filename().string());
-    for (const std::string& v : c.values) table += "," + csvField(v);
+    std::vector<std::string> row = {c.id, std::filesystem::path(c.test).filename().string()};
+    row.insert(row.end(), c.values.begin(), c.values.end());
+    table += csvLine(row);
     table += "\n";
     jobs += caseCommand(bdfcar, out, c) + "\n";
   }
