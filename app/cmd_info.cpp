@@ -17,6 +17,7 @@
 #include "vehicle/planar_model.h"
 #include "vehicle/vehicle_sheet.h"
 #include "vehicle/motion_ratio.h"
+#include "vehicle/powertrain.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_file.h"
 
@@ -117,11 +118,14 @@ int runInfo(const std::string& path, const std::string& fidelity, const std::vec
     std::printf("  %-18s anti-roll bar %s - %s, %.0f N/m at the wheels\n", b.name.c_str(), vehicle::kCornerNames[b.left],
                 vehicle::kCornerNames[b.right], b.rate);
   const int spin = v.layout.spinCoordinates;
-  const int coords = m.nv - spin, cuts = v.layout.cutJointEquations;
-  std::printf("\nrelative coordinates: %d (+%d wheel spin)\n", coords, spin);
+  const int engine = v.layout.engine >= 0 ? 1 : 0;
+  const int coords = m.nv - spin - engine, cuts = v.layout.cutJointEquations;
+  const std::string rotors = "+" + std::to_string(spin) + " wheel spin" + (engine ? ", +1 engine" : "");
+  std::printf("\nrelative coordinates: %d (%s)\n", coords, rotors.c_str());
   std::printf("cut-joint constraint equations: %d (+%d driving constraint: rack travel)\n", cuts, m.nc - cuts);
-  std::printf("degrees of freedom: %d (+%d wheel spin); with the rack prescribed: %d\n", coords - cuts, spin,
+  std::printf("degrees of freedom: %d (%s); with the rack prescribed: %d\n", coords - cuts, rotors.c_str(),
               coords - cuts - (m.nc - cuts));
+  if (v.spec.powertrain) std::printf("%s", vehicle::describePowertrain(*v.spec.powertrain, v.spec.geometry.wheelRadius).c_str());
   std::printf("total mass: %.3f kg\n", m.totalMass());
   // The sheet, when the linkage can be swept (a vehicle that cannot is
   // still described above).

@@ -37,7 +37,7 @@ std::string driveTicks(scenario::Simulation& sim, int first, int ticks, const st
     for (int i = first; i < first + ticks; ++i) {
       sim.beginTick(personAt(i));
       for (int k = 0; k < sim.stepsPerTick(); ++k) EXPECT_TRUE(sim.step().ok());
-      w.write(sim.sample(), {sim.steerAt(sim.time()), 0, 0, 0, 0});
+      w.write(sim.sample(), {sim.steerAt(sim.time()), 0, 0, 0, 0, 0, 0, {}});
     }
   }
   return readFile(file);
@@ -297,7 +297,8 @@ TEST(Telemetry, EveryColumnIsDocumented) {
       documented.insert(name);
     }
   }
-  std::istringstream header(scenario::TelemetryWriter::header());
+  std::istringstream header(std::string(scenario::TelemetryWriter::header()) + "," +
+                            scenario::TelemetryWriter::powertrainHeader());
   int columns = 0;
   for (std::string column; std::getline(header, column, ','); ++columns)
     EXPECT_TRUE(documented.count(column)) << "column '" << column << "' is not in docs/TELEMETRY.md";

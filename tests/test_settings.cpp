@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "config/toml_reader.h"
+#include "test_files.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 #include "vehicle/vehicle_file.h"
@@ -84,12 +85,10 @@ TEST(Settings, GiveWhatEditingTheFileGives) {
   EXPECT_DOUBLE_EQ(soft.springs[0].damper.coefficient, 9000.0);
   EXPECT_DOUBLE_EQ(soft.springs[1].damper.coefficient, 9000.0);  // mirrored: the file's one element is both sides
   // The edited vehicle file: the sedan's springs array with the damping changed.
-  std::ifstream sv(kAssets / "vehicles/sedan.toml");
-  std::string sedan((std::istreambuf_iterator<char>(sv)), std::istreambuf_iterator<char>());
+  std::string sedan = test::sedanText((kAssets / "vehicles/parts/").string());
   const std::regex firstDamping(R"(\ndamping = [^\n]*)");
   ASSERT_TRUE(std::regex_search(sedan, firstDamping));
   sedan = std::regex_replace(sedan, firstDamping, "\ndamping = 9000.0", std::regex_constants::format_first_only);
-  sedan = std::regex_replace(sedan, std::regex(R"(include = "parts/)"), "include = \"" + (kAssets / "vehicles/parts/").string());
   write(scratch("sedan_soft.toml"), sedan);
 
   const std::vector<config::Setting> settings = {config::parseSetting("start.speed=70 km/h"),

@@ -15,13 +15,14 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/motion_ratio.h"
 #include "vehicle/vehicle_builder.h"
+#include "test_files.h"
 #include "vehicle/vehicle_file.h"
 
 using namespace bdfcar;
+using test::asset;
+using test::sedanText;
 
 namespace {
-
-std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
 
 struct Settled {
   vehicle::Vehicle v;
@@ -59,11 +60,6 @@ std::string loadError(const std::string& text) {
   }
   std::filesystem::remove(path);
   return what;
-}
-
-std::string sedanText() {
-  std::ifstream f(asset("vehicles/sedan.toml"));
-  return std::string(std::istreambuf_iterator<char>(f), {});
 }
 
 std::string replaced(std::string s, const std::string& from, const std::string& to) {

@@ -114,16 +114,23 @@ int ModelBuilder::addBody(Body body) {
   if (model_.bodyIndex(body.name) >= 0) throw ModelError(what + ": duplicate body name");
   if (body.parent != kGround && (body.parent < 0 || body.parent >= index))
     throw ModelError(what + ": parent must be the ground or a body defined before it");
-  if (!(body.mass > 0) || !std::isfinite(body.mass))
-    throw ModelError(what + ": mass must be positive (got " + std::to_string(body.mass) + " kg)");
-  if (!body.inertia.allFinite() || (body.inertia - body.inertia.transpose()).norm() > 1e-9 * body.inertia.norm())
-    throw ModelError(what + ": inertia must be a finite symmetric matrix");
-  Eigen::SelfAdjointEigenSolver<Mat3> eig(body.inertia);
-  const Vec3 p = eig.eigenvalues();  // ascending
-  if (!(p(0) > 0) || p(0) + p(1) < p(2) * (1 - 1e-9))
-    throw ModelError(what + ": inertia must be positive definite and satisfy the triangle inequality"
-                            " (principal moments " + std::to_string(p(0)) + ", " + std::to_string(p(1)) +
-                     ", " + std::to_string(p(2)) + " kg m^2)");
+  // A pure rotor (a flywheel whose mass another body carries): no mass, no
+  // rigid-body inertia, its rotor inertia about its revolute joint's axis.
+  const bool rotorOnly = body.mass == 0.0 && body.inertia.isZero(0.0) && body.rotorInertia > 0 &&
+                         body.joint == JointType::Revolute &&
+                         body.rotorAxis.normalized().cross(body.inChild.axes.col(2)).norm() < 1e-9;
+  if (!rotorOnly) {
+    if (!(body.mass > 0) || !std::isfinite(body.mass))
+      throw ModelError(what + ": mass must be positive (got " + std::to_string(body.mass) + " kg)");
+    if (!body.inertia.allFinite() || (body.inertia - body.inertia.transpose()).norm() > 1e-9 * body.inertia.norm())
+      throw ModelError(what + ": inertia must be a finite symmetric matrix");
+    Eigen::SelfAdjointEigenSolver<Mat3> eig(body.inertia);
+    const Vec3 p = eig.eigenvalues();  // ascending
+    if (!(p(0) > 0) || p(0) + p(1) < p(2) * (1 - 1e-9))
+      throw ModelError(what + ": inertia must be positive definite and satisfy the triangle inequality"
+                              " (principal moments " + std::to_string(p(0)) + ", " + std::to_string(p(1)) +
+                       ", " + std::to_string(p(2)) + " kg m^2)");
+  }
   if (!body.com.allFinite()) throw ModelError(what + ": centre of mass must be finite");
   checkAxes(body.inParent.axes, what + " joint '" + body.jointName + "' parent frame");
   checkAxes(body.inChild.axes, what + " joint '" + body.jointName + "' child frame");

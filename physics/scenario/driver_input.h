@@ -8,6 +8,12 @@ struct DriverInput {
   double steer = 0.0;     // normalised steering [-1, 1], + = left (maps to rack travel)
   double throttle = 0.0;  // [0, 1]
   double brake = 0.0;     // [0, 1]
+  // For a car with a powertrain (ignored without one):
+  double handbrake = 0.0; // [0, 1], on the rear wheels
+  double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); used when clutchPedal
+  bool clutchPedal = false;  // a clutch pedal is mapped: the driver works the clutch (else it is automatic)
+  int shift = 0;          // +1 up, -1 down: a request made in this tick
+  bool operator==(const DriverInput&) const = default;
 };
 
 }  // namespace bdfcar::scenario

@@ -41,7 +41,7 @@ Run::~Run() = default;
 TelemetryInputs Run::rowInputs() const {
   const DriverInput in = sim_.lastInput();
   return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_,
-          static_cast<int>(sim_.vehicle().fidelity)};
+          static_cast<int>(sim_.vehicle().fidelity), sim_.powertrainChannels()};
 }
 
 void Run::record() {

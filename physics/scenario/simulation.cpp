@@ -35,7 +35,7 @@ SignalValue RackSignal::at(double t) const {
 bool RunState::operator==(const RunState& o) const {
   return integrator == o.integrator && forces == o.forces && rack == o.rack && speedIntegral == o.speedIntegral &&
          follower == o.follower && input.steer == o.input.steer && input.throttle == o.input.throttle &&
-         input.brake == o.input.brake && scriptedDriver == o.scriptedDriver && airborne == o.airborne &&
+         input == o.input && transmission == o.transmission && scriptedDriver == o.scriptedDriver && airborne == o.airborne &&
          rung == o.rung && fidelity == o.fidelity;
 }
 
@@ -60,6 +60,19 @@ double vehicleWidth(const vehicle::Vehicle& v) {
 }
 
 namespace {
+
+// The most torque per driven wheel the car can put down: its [driveline]'s,
+// or its engine's best in first gear; infinite on neither.
+double driveLimit(const vehicle::Vehicle& v) {
+  if (v.spec.powertrain) {
+    const vehicle::PowertrainSpec& p = *v.spec.powertrain;
+    int driven = 0;
+    for (const vehicle::WheelSpec& w : v.spec.wheels) driven += w.driven ? 1 : 0;
+    const double peak = *std::max_element(p.engine.torque.begin(), p.engine.torque.end());
+    return peak * p.gearbox.overall(1) / std::max(1, driven);
+  }
+  return v.spec.maxDriveTorque > 0 ? v.spec.maxDriveTorque : std::numeric_limits<double>::infinity();
+}
 
 std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
   if (spec.terrainFile.empty()) return std::make_unique<terrain::PlaneTerrain>();
@@ -146,11 +159,11 @@ Simulation::Simulation(std::shared_ptr<const World> world)
                     offsets, tyres);
   }
   activate(0);
+  if (veh.spec.powertrain) transmission_.emplace(*veh.spec.powertrain);
   if (spec.speedControl.enabled)
     speed_.emplace(spec.speedControl.profile, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki},
                    // The driveline's limit per driven wheel (none on a vehicle without one).
-                   vehicle().spec.maxDriveTorque > 0 ? vehicle().spec.maxDriveTorque
-                                                     : std::numeric_limits<double>::infinity());
+                   driveLimit(veh));
   if (spec.pathFollower.enabled) {
     PathFollowerParams p;
     p.lookAheadTime = spec.pathFollower.lookAheadTime;
@@ -350,6 +363,15 @@ vehicle::EquilibriumReport Simulation::prepare() {
     const double rolling = tyre::unloadedRadius(vehicle().wheel(w).tyre) - forces_->wheels()[w].out.deflection;
     v(wl.spinV) = wl.spinSign * spec().initialSpeed / rolling;
   }
+  if (transmission_) {
+    // In the gear that suits the speed, the engine at the speed it gives (idling at rest).
+    const DrivelineSpeeds s = drivelineSpeeds(v, spec().initialSpeed);
+    transmission_->start(s.output, s.vx);
+    const double locked = vehicle().spec.powertrain->gearbox.overall(transmission_->state().gear) * s.output;
+    v(vehicle().layout.engineV) = transmission_->state().engagement >= 1.0
+                                      ? locked
+                                      : std::max(locked, vehicle().spec.powertrain->engine.idleSpeed);
+  }
   forces_->reset(t0);
   integ::Message im;
   if (integrator_->initialize(t0, q, v, im) != integ::EvalStatus::Ok)
@@ -369,7 +391,73 @@ vehicle::EquilibriumReport Simulation::prepare() {
   return eq;
 }
 
+DrivelineSpeeds Simulation::drivelineSpeeds(const integ::Vec& v, double vx) const {
+  DrivelineSpeeds s;
+  s.vx = vx;
+  s.engine = v(vehicle().layout.engineV);
+  int n = 0;
+  for (int w = 0; w < 4; ++w)
+    if (vehicle().wheel(w).driven) {
+      s.output += vehicle().layout.wheels[w].spinSign * v(vehicle().layout.wheels[w].spinV);
+      ++n;
+    }
+  s.output /= std::max(1, n);
+  return s;
+}
+
+void Simulation::applyPowertrain(DriverInput in, double vx, double h) {
+  const vehicle::PowertrainSpec& p = *vehicle().spec.powertrain;
+  const DrivelineSpeeds s = drivelineSpeeds(integrator_->current().v, vx);
+  if (speed_ && speed_->active(time())) {
+    // The speed hold works the pedals: its torque per driven wheel as a
+    // share of what the engine gives in this gear now, or as a brake.
+    const double T = speed_->torque(vx, h, time());
+    const double ratio = std::abs(p.gearbox.overall(transmission_->state().gear));
+    int driven = 0;
+    double brakes = 0;
+    for (int w = 0; w < 4; ++w) {
+      driven += vehicle().wheel(w).driven ? 1 : 0;
+      brakes += vehicle().wheel(w).brakeTorque;
+    }
+    const double available = vehicle::fullLoadTorque(p.engine, s.engine) * ratio / std::max(1, driven);
+    in.throttle = T > 0 ? (available > 0 ? std::min(1.0, T / available) : 1.0) : 0.0;
+    in.brake = T < 0 && brakes > 0 ? std::min(1.0, -T * driven / brakes) : in.brake;
+  } else if (speed_) {
+    speed_->torque(vx, h, time());  // keeps its phase (its integral starts afresh when it takes over)
+  }
+  forces_->setDriveline(transmission_->update(in, s, h));
+  for (int w = 0; w < 4; ++w) {
+    const vehicle::WheelSpec& ws = vehicle().wheel(w);
+    forces_->setDriveTorque(w, 0.0);
+    const double handbrake = w >= 2 ? in.handbrake * p.handbrakeTorque : 0.0;
+    forces_->setBrakeCapacity(w, std::max(in.brake * ws.brakeTorque, handbrake));
+  }
+}
+
+PowertrainChannels Simulation::powertrainChannels() const {
+  PowertrainChannels c;
+  if (!transmission_) return c;
+  // From the accepted state and the command held over its step (not the
+  // force law's latest evaluation, which a sample or a view may have made).
+  const vehicle::PowertrainSpec& p = *vehicle().spec.powertrain;
+  const vehicle::DrivelineState& d = forces_->driveline();
+  const DrivelineSpeeds s = drivelineSpeeds(integrator_->current().v, 0.0);
+  const double rpm = 60.0 / (2.0 * M_PI), slip = s.engine - d.command.ratio * s.output;
+  c.engineRpm = s.engine * rpm;
+  c.gear = transmission_->state().gear;
+  c.clutch = transmission_->state().engagement;
+  c.clutchSlipRpm = slip * rpm;
+  c.engineTorque = vehicle::engineTorque(p.engine, s.engine, d.command.throttle);
+  c.clutchTorque = d.command.ratio == 0.0
+                       ? 0.0
+                       : vehicle::clutchTorque(p.clutch, d.command.clutchCapacity, d.clutchDeflection, slip, 0.0);
+  c.throttle = d.command.throttle;
+  c.handbrake = input_.handbrake;
+  return c;
+}
+
 void Simulation::applyDrive(const DriverInput& in, double vx, double h) {
+  if (transmission_) return applyPowertrain(in, vx, h);
   double pi = 0;
   if (speed_) pi = speed_->torque(vx, h, time());
   for (int w = 0; w < 4; ++w) {
@@ -423,6 +511,10 @@ void Simulation::beginTick(const std::optional<DriverInput>& input) {
     input_.steer = std::clamp(input->steer, -1.0, 1.0);
     input_.throttle = std::clamp(input->throttle, 0.0, 1.0);
     input_.brake = std::clamp(input->brake, 0.0, 1.0);
+    input_.handbrake = std::clamp(input->handbrake, 0.0, 1.0);
+    input_.clutch = std::clamp(input->clutch, 0.0, 1.0);
+    input_.clutchPedal = input->clutchPedal;
+    input_.shift = input->shift > 0 ? 1 : input->shift < 0 ? -1 : 0;
     steerToward(input_.steer);
   } else if (follower_ && time() >= 0) {
     const ChassisState s = chassisState();
@@ -445,6 +537,7 @@ integ::StepReport Simulation::step() {
     if (rack_.segment.scripted) input_.steer = steering_->at(t + h).value;
   }
   applyDrive(input_, chassisState().vx, h);
+  input_.shift = 0;  // a gear request acts once, at the tick's first step
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;
   bool grounded = false;
@@ -507,6 +600,7 @@ RunState Simulation::save() {
   s.airborne = airborne_;
   s.rung = active_;
   s.fidelity = policyState_;
+  if (transmission_) s.transmission = transmission_->state();
   // Every model's Jacobian (a model switched back to keeps its own): a run
   // restored to this state finds none either.
   for (Rung& r : rungs_) r.integrator->markJacobianStale();
@@ -523,6 +617,7 @@ void Simulation::restore(const RunState& s) {
   if (speed_) speed_->setIntegral(s.speedIntegral);
   if (follower_) follower_->setState(s.follower);
   input_ = s.input;
+  if (transmission_) transmission_->setState(s.transmission);
   scriptedDriver_ = s.scriptedDriver;
   airborne_ = s.airborne;
   prepared_ = true;

@@ -28,6 +28,8 @@
 #include "scenario/signals.h"
 #include "scenario/speed_controller.h"
 #include "scenario/steering_system.h"
+#include "scenario/telemetry.h"
+#include "scenario/transmission.h"
 #include "terrain/terrain.h"
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
@@ -77,6 +79,7 @@ struct RunState {
   double airborne = 0;                 // s with no ground under any wheel
   int rung = 0;                        // the model driving: 0 = world.vehicle, 1 = world.planar
   FidelityPolicy::State fidelity;      // `auto`'s
+  TransmissionState transmission;      // a powertrain's gear, shift and clutch
   bool operator==(const RunState& o) const;
 };
 
@@ -152,6 +155,11 @@ class Simulation {
   double steerAt(double t) const { return rack_.steerAt(t); }
   DriverInput lastInput() const { return input_; }
   double driveTorque(int wheel) const { return forces_->wheels()[wheel].driveTorque; }
+  // A powertrain's controller (none without a powertrain) and its driveline's latest evaluation.
+  const Transmission* transmission() const { return transmission_ ? &*transmission_ : nullptr; }
+  const vehicle::DrivelineState& driveline() const { return forces_->driveline(); }
+  // The powertrain's telemetry channels now (zeros without one).
+  PowertrainChannels powertrainChannels() const;
 
  private:
   struct StartPose {
@@ -167,6 +175,10 @@ class Simulation {
   ChassisState chassisState() const;
   std::unique_ptr<integ::Integrator> makeIntegrator(mb::MultibodyDae& dae) const;
   void applyDrive(const DriverInput& in, double vx, double h);
+  // A powertrain car's step: the speed hold works the pedals, the
+  // transmission decides gear and clutch; the handbrake on the rear wheels.
+  void applyPowertrain(DriverInput in, double vx, double h);
+  DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx) const;
   void steerToward(double command);
 
   // One model of the vehicle with its force laws and integrator.
@@ -192,6 +204,7 @@ class Simulation {
   FidelityPolicy::State policyState_;
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
+  std::optional<Transmission> transmission_;
   RackSignal rack_;
   SteeringLimits steeringLimits_;
   DriverInput input_;

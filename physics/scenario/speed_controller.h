@@ -65,6 +65,7 @@ class SpeedController {
     return T;
   }
   double target(double t) const { return profile_.at(t); }
+  bool active(double t) const { return profile_.active(t); }
   void reset() { integral_ = 0; }
   // The integral of the speed error (m): the controller's run state.
   double integral() const { return integral_; }

@@ -22,9 +22,17 @@ const char* TelemetryWriter::header() {
          "Mz_FL_Nm,Mz_FR_Nm,Mz_RL_Nm,Mz_RR_Nm";
 }
 
+const char* TelemetryWriter::powertrainHeader() {
+  return "engine_rpm,gear,clutch,clutch_slip_rpm,engine_torque_Nm,clutch_torque_Nm,engine_throttle,handbrake_in";
+}
+
+std::string TelemetryWriter::header(const vehicle::Vehicle& v) {
+  return v.spec.powertrain ? std::string(header()) + "," + powertrainHeader() : std::string(header());
+}
+
 TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v)
     : file_(path), v_(v), queue_(kQueueRows) {
-  file_.append(std::string(header()) + "\n");
+  file_.append(header(v) + "\n");
   thread_ = std::thread([this] { writerLoop(); });
 }
 
@@ -170,6 +178,13 @@ void TelemetryWriter::formatRow(const Row& r) {
   put(std::to_chars(p, end, in.segment), ',');
   put(std::to_chars(p, end, in.fidelity), ',');
   for (double v : corners) put(std::to_chars(p, end, v, std::chars_format::general, 10), ',');
+  if (v_.spec.powertrain) {
+    const PowertrainChannels& pt = in.powertrain;
+    put(std::to_chars(p, end, pt.engineRpm, std::chars_format::general, 10), ',');
+    put(std::to_chars(p, end, pt.gear), ',');
+    for (double v : {pt.clutch, pt.clutchSlipRpm, pt.engineTorque, pt.clutchTorque, pt.throttle, pt.handbrake})
+      put(std::to_chars(p, end, v, std::chars_format::general, 10), ',');
+  }
   p[-1] = '\n';
   file_.append(row, static_cast<std::size_t>(p - row));
 }

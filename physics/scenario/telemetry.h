@@ -18,6 +18,18 @@
 
 namespace bdfcar::scenario {
 
+// A powertrain's channels (columns after the others, on a car with one).
+struct PowertrainChannels {
+  double engineRpm = 0;      // crank relative to the chassis
+  int gear = 0;              // -1 reverse, 0 neutral, 1..n
+  double clutch = 0;         // [0, 1] engagement (1 closed)
+  double clutchSlipRpm = 0;  // crank less gearbox input
+  double engineTorque = 0;   // N m, combustion less friction
+  double clutchTorque = 0;   // N m into the gearbox
+  double throttle = 0;       // [0, 1] at the engine: the driver's, the speed hold's, closed during a shift
+  double handbrake = 0;      // [0, 1]
+};
+
 // Quantities of a row that are not in the vehicle sample.
 struct TelemetryInputs {
   double steer = 0;      // normalised steering input s
@@ -26,6 +38,7 @@ struct TelemetryInputs {
   double newtonCorrection = 0;  // weighted norm of the last correction (1 = tolerance)
   int segment = 0;              // a drive's segment: +1 at each reset, rewind or divergence reset
   int fidelity = 0;             // the model driving: vehicle::Fidelity (0 linkage, 1 kinematic, 2 planar)
+  PowertrainChannels powertrain;  // written when the vehicle has a powertrain
 };
 
 // Rows are formatted and written by a thread of the writer's own, so that
@@ -52,6 +65,9 @@ class TelemetryWriter {
   void close();
   const std::string& path() const { return file_.path(); }
   static const char* header();
+  // The header of a vehicle's file: header(), then powertrainHeader() on a car with a powertrain.
+  static std::string header(const vehicle::Vehicle& v);
+  static const char* powertrainHeader();
 
  private:
   struct Row {

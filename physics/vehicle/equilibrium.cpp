@@ -31,6 +31,7 @@ std::vector<int> heldCoordinates(const Vehicle& v) {
   std::vector<int> held = {base.vIndex + 0, base.vIndex + 1, base.vIndex + (base.joint == mb::JointType::Planar ? 2 : 5)};
   addDrivenCoordinates(v.model, held);
   for (const WheelLayout& w : v.layout.wheels) held.push_back(w.spinV);
+  if (v.layout.engine >= 0) held.push_back(v.layout.engineV);
   std::sort(held.begin(), held.end());
   return held;
 }

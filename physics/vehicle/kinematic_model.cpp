@@ -38,7 +38,7 @@ class LinkageSweep {
       const int b = static_cast<int>(i);
       bool spin = false;
       for (const WheelLayout& w : v.layout.wheels) spin |= w.spindle == b;
-      if (b == v.layout.chassis || b == v.layout.rack || spin) continue;
+      if (b == v.layout.chassis || b == v.layout.rack || b == v.layout.engine || spin) continue;
       for (int k = 0; k < m_.bodies[i].nv; ++k) free_.push_back(m_.bodies[i].vIndex + k);
     }
     if (static_cast<int>(free_.size()) != static_cast<int>(rows_.size()) + 4)
@@ -348,6 +348,7 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
       mbld.addSpring(e);
     }
   }
+  addEngine(mbld, out.spec, L.chassis, ch.com);
   out.spec.bodies = specs;
   // Springs in the order the model holds them.
   out.spec.springs.clear();

@@ -254,6 +254,7 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
     L.wheels[w].spinSign = KL.wheels[w].spinSign;
     specs.push_back(kin.spec.bodies[KL.wheels[w].spindle]);
   }
+  addEngine(mbld, outV.spec, L.chassis, ch.com);
   outV.spec.bodies = specs;
   outV.spec.springs.clear();
   L.springCorner.clear();  // the corner springs are PlanarLoads'

@@ -14,7 +14,7 @@ namespace {
 using Eigen::VectorXd;
 
 // What both models share, besides the sprung body: rack, the steered
-// corners' rack travel, wheel spins. `rackTravel(v, w)`: index of corner w's
+// corners' rack travel, wheel spins, the engine. `rackTravel(v, w)`: index of corner w's
 // rack-travel coordinate, -1 where the corner does not steer.
 int rackTravel(const Vehicle& v, int w, bool velocity) {
   const mb::Body& c = v.model.bodies[v.layout.wheels[w].carrier];
@@ -37,6 +37,11 @@ void copyShared(const Vehicle& from, const Vehicle& to, const VectorXd& qf, cons
     const mb::Body& st = to.model.bodies[to.layout.wheels[w].spindle];
     qt(st.qIndex) = qf(sf.qIndex);
     vt(st.vIndex) = vf(sf.vIndex);
+  }
+  // The engine turns relative to the sprung body in both.
+  if (from.layout.engine >= 0 && to.layout.engine >= 0) {
+    qt(to.layout.engineQ) = qf(from.layout.engineQ);
+    vt(to.layout.engineV) = vf(from.layout.engineV);
   }
 }
 

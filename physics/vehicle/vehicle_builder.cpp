@@ -130,6 +130,7 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
     L.links.push_back({e.bodyA, e.bodyB, e.pointA, e.pointB, LinkKind::Spring});
   }
 
+  addEngine(mbld, s, 0, s.bodies.front().com);
   out.model = mbld.build();
   const mb::Model& m = out.model;
   L.chassis = 0;
@@ -150,8 +151,9 @@ Vehicle buildVehicle(const VehicleSpec& spec) {
     ++L.spinCoordinates;
   }
   // Members drawn from each suspension body's joint to its other attachment points.
+  indexEngine(out);
   for (size_t i = 1; i < m.bodies.size(); ++i) {
-    if (static_cast<int>(i) == L.rack) continue;
+    if (static_cast<int>(i) == L.rack || static_cast<int>(i) == L.engine) continue;
     bool isWheel = false;
     for (const WheelLayout& wl : L.wheels) isWheel |= wl.spindle == static_cast<int>(i);
     if (isWheel) continue;
@@ -191,6 +193,37 @@ void indexDerivedLayout(Vehicle& v, double rackAxisSign) {
     wl.spinV = v.model.bodies[wl.spindle].vIndex;
     ++L.spinCoordinates;
   }
+  indexEngine(v);
+}
+
+void addEngine(mb::ModelBuilder& builder, const VehicleSpec& spec, int chassis, const Vec3& com) {
+  if (!spec.powertrain) return;
+  mb::Body e;
+  e.name = "engine";
+  e.jointName = "crank";
+  e.joint = mb::JointType::Revolute;
+  e.parent = chassis;
+  // Massless: the engine's mass is the chassis'. Its rotating parts are a
+  // rotor about the crank axis (chassis x), through the chassis' centre of
+  // mass; its body axes are the chassis' at zero crank angle.
+  e.rotorInertia = spec.powertrain->engine.inertia;
+  e.rotorAxis = Vec3::UnitX();
+  const Mat3 axes = mb::axesWithZ(Vec3::UnitX());
+  e.inParent = mb::JointFrame{com, axes};
+  e.inChild = mb::JointFrame{Vec3::Zero(), axes};
+  builder.addBody(e);
+}
+
+void indexEngine(Vehicle& v) {
+  VehicleLayout& L = v.layout;
+  L.engine = L.engineQ = L.engineV = -1;
+  if (!v.spec.powertrain) return;
+  for (size_t i = 0; i < v.model.bodies.size(); ++i)
+    if (v.model.bodies[i].name == "engine" && v.model.bodies[i].jointName == "crank") {
+      L.engine = static_cast<int>(i);
+      L.engineQ = v.model.bodies[i].qIndex;
+      L.engineV = v.model.bodies[i].vIndex;
+    }
 }
 
 void setRackTravel(const Vehicle& v, Eigen::VectorXd& q, double x) {

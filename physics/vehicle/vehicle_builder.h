@@ -40,6 +40,9 @@ struct VehicleLayout {
   std::vector<int> springCorner;
   std::array<Vec3, 4> wheelCentreAtDesign{};
   int cutJointEquations = 0;   // rows from cut joints (without the rack driver)
+  // A powertrain's engine (-1: none): a rotor on a revolute joint about
+  // chassis x, whose joint coordinate is the crank angle.
+  int engine = -1, engineQ = -1, engineV = -1;
   int spinCoordinates = 0;
 };
 
@@ -91,6 +94,13 @@ Vehicle buildVehicle(const VehicleSpec& spec);
 // layout's indices once the model is built (rack, spins; no loop equations).
 void addRackDriver(mb::ModelBuilder& builder, const std::string& name, int body, int coordinate = 0);
 void indexDerivedLayout(Vehicle& v, double rackAxisSign);
+
+// A powertrain's engine as a body of the model (none without a powertrain):
+// a rotor of the engine's inertia about chassis x on a revolute joint in the
+// chassis body `chassis`, at its centre of mass `com` (its own frame).
+void addEngine(mb::ModelBuilder& builder, const VehicleSpec& spec, int chassis, const Vec3& com);
+// The engine's indices once the model is built (VehicleLayout::engine).
+void indexEngine(Vehicle& v);
 
 // Sets the rack coordinate of q (and every coordinate a rack driver ties to
 // it: a kinematic model's steered corners) to x, m along the rack's axis.

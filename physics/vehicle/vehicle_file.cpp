@@ -6,6 +6,7 @@
 #include <set>
 
 #include "config/toml_reader.h"
+#include "vehicle/powertrain_file.h"
 
 namespace bdfcar::vehicle {
 
@@ -41,6 +42,7 @@ const Range kTorque{0.0, 1e6};                            // N m, brakes and dri
 const Range kRackTravel{-1.0, 1.0};                       // m at full steering input
 const Range kSteeringWheelAngle{0.0, 100.0, true, false}; // rad at full steering input
 const Range kDragArea{0.0, 100.0};                        // 0.5 rho Cd A, N s^2/m^2
+const Range kLiftArea{-100.0, 100.0};                     // 0.5 rho Cl A, N s^2/m^2
 const Range kResponseTime{0.005, 1.0};                    // s, the steering system's
 const Range kRackSpeed{0.0, 5.0, true, false};            // m/s
 const Range kRackAcceleration{0.0, 1000.0, true, false};  // m/s^2
@@ -453,6 +455,14 @@ void Loader::readSteeringAndDriveline() {
   sys.maxRackAcceleration =
       st.number("max_rack_acceleration", Dimension::Acceleration, kRackAcceleration, sys.maxRackAcceleration);
   st.finish();
+  if (auto p = root_.optionalTable("powertrain")) {
+    spec_.powertrain = readPowertrain(*p);
+    // Its differential is inboard: the drive torques react on the chassis.
+    spec_.driveReaction = DriveReaction::Chassis;
+    if (root_.has("driveline"))
+      root_.fail("[driveline] is the reference runs' speed hold on the wheels; a vehicle with a [powertrain] is driven "
+                 "by its engine: remove one of them", "driveline");
+  }
   if (auto d = root_.optionalTable("driveline")) {
     spec_.maxDriveTorque = d->number("max_torque", Dimension::Torque, kTorque);
     const std::string reaction = d->string("torque_reaction", "chassis");
@@ -464,8 +474,11 @@ void Loader::readSteeringAndDriveline() {
   }
   if (auto a = root_.optionalTable("aerodynamics")) {
     spec_.dragArea = a->number("drag_area", Dimension::None, kDragArea);  // 0.5 rho Cd A, N s^2/m^2
+    spec_.liftAreaFront = a->numberIn("lift_area_front", kLiftArea, 0.0);  // 0.5 rho Cl A, N s^2/m^2, - downforce
+    spec_.liftAreaRear = a->numberIn("lift_area_rear", kLiftArea, 0.0);
     a->finish();
   }
+
 }
 
 void Loader::readAppearance() {

@@ -11,7 +11,10 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
       terrain_(terrain),
       options_(options),
       tyres_{tyre::Tyre(vehicle.wheel(0).tyre), tyre::Tyre(vehicle.wheel(1).tyre), tyre::Tyre(vehicle.wheel(2).tyre),
-             tyre::Tyre(vehicle.wheel(3).tyre)} {}
+             tyre::Tyre(vehicle.wheel(3).tyre)} {
+  for (int w = 0; w < 4; ++w)
+    if (vehicle.wheel(w).driven) driven_.push_back(w);
+}
 
 void VehicleForces::reset(double t) {
   for (WheelContact& c : wheels_) {
@@ -19,6 +22,7 @@ void VehicleForces::reset(double t) {
     c.brakeDeflection = 0;
     c.acceptedForce.setZero();
   }
+  driveline_.clutchDeflection = 0;
   lastAccepted_ = t;
   planesReady_ = false;
 }
@@ -170,23 +174,80 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
     if (c.out.inContact) mb::addWorldWrench(d, wl.spindle, c.out.point, c.out.force, c.out.moment);
     // Brakes react on the carrier (caliper on the upright): a joint torque.
     d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, relativeSpin(d, w), h);
-    if (c.driveTorque != 0.0) {
-      const Eigen::Vector3d torque = c.driveTorque * k.spinAxis;
-      switch (vehicle_.spec.driveReaction) {
-        case DriveReaction::Carrier: d.jointForce(wl.spinV) += wl.spinSign * c.driveTorque; break;
-        case DriveReaction::Chassis:
-          mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque);
-          mb::addWorldWrench(d, vehicle_.layout.chassis, k.centre, Eigen::Vector3d::Zero(), -torque);
-          break;
-        case DriveReaction::None: mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque); break;
-      }
-    }
+    if (!vehicle_.spec.powertrain) applyDriveTorque(d, w, k);
   }
-  if (vehicle_.spec.dragArea > 0) {
-    const int ch = vehicle_.layout.chassis;
-    const Eigen::Vector3d v = mb::pointVelocity(d, ch, vehicle_.model.bodies[ch].com);
-    mb::addWorldForce(d, ch, mb::pointPosition(d, ch, vehicle_.model.bodies[ch].com),
-                       -vehicle_.spec.dragArea * v.norm() * v);
+  if (vehicle_.spec.powertrain) {
+    powertrain(d, h);
+    for (int w : driven_) applyDriveTorque(d, w, wheelKinematics(d, w));
+  }
+  aerodynamics(d);
+}
+
+void VehicleForces::applyDriveTorque(mb::Data& d, int w, const tyre::WheelKinematics& k) const {
+  const WheelContact& c = wheels_[w];
+  if (c.driveTorque == 0.0) return;
+  const WheelLayout& wl = vehicle_.layout.wheels[w];
+  const Eigen::Vector3d torque = c.driveTorque * k.spinAxis;
+  switch (vehicle_.spec.driveReaction) {
+    case DriveReaction::Carrier: d.jointForce(wl.spinV) += wl.spinSign * c.driveTorque; break;
+    case DriveReaction::Chassis:
+      mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque);
+      mb::addWorldWrench(d, vehicle_.layout.chassis, k.centre, Eigen::Vector3d::Zero(), -torque);
+      break;
+    case DriveReaction::None: mb::addWorldWrench(d, wl.spindle, k.centre, Eigen::Vector3d::Zero(), torque); break;
+  }
+}
+
+double VehicleForces::engineSpeed(const mb::Data& d) const {
+  // The crank's rate relative to the chassis, about the engine body's x axis.
+  const int e = vehicle_.layout.engine;
+  const int parent = vehicle_.model.bodies[e].parent;
+  return (d.vel[e].tail<3>() - d.Xup[e].E * d.vel[parent].tail<3>()).x();
+}
+
+double VehicleForces::drivenSpeed(const mb::Data& d) const {
+  double sum = 0;
+  for (int w : driven_) sum += relativeSpin(d, w);  // about the spindle's y: + rolls forwards on either side
+  return driven_.empty() ? 0.0 : sum / static_cast<double>(driven_.size());
+}
+
+void VehicleForces::powertrain(mb::Data& d, double h) {
+  const PowertrainSpec& P = *vehicle_.spec.powertrain;
+  DrivelineState& s = driveline_;
+  s.engineSpeed = engineSpeed(d);
+  s.outputSpeed = drivenSpeed(d);
+  s.engineTorque = engineTorque(P.engine, s.engineSpeed, s.command.throttle);
+  // In neutral the clutch turns the gearbox's input shaft alone (its inertia is the engine's).
+  s.clutchTorque = s.command.ratio == 0.0
+                       ? 0.0
+                       : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
+                                      s.engineSpeed - s.command.ratio * s.outputSpeed, h);
+  d.jointForce(vehicle_.layout.engineV) += s.engineTorque - s.clutchTorque;
+  // The differential: an equal share of the gearbox output for each driven
+  // wheel (the torque balance of an open differential), plus the viscous
+  // coupling's torque from the faster wheels to the slower.
+  const double share = s.command.ratio * s.clutchTorque / static_cast<double>(driven_.size());
+  for (int w : driven_) {
+    wheels_[w].driveTorque = share - P.viscousCoupling * (relativeSpin(d, w) - s.outputSpeed);
+  }
+}
+
+void VehicleForces::aerodynamics(mb::Data& d) const {
+  const VehicleSpec& S = vehicle_.spec;
+  if (S.dragArea <= 0 && S.liftAreaFront == 0 && S.liftAreaRear == 0) return;
+  const int ch = vehicle_.layout.chassis;
+  const Vec3& com = vehicle_.model.bodies[ch].com;
+  const Eigen::Vector3d v = mb::pointVelocity(d, ch, com);
+  if (S.dragArea > 0) mb::addWorldForce(d, ch, mb::pointPosition(d, ch, com), -S.dragArea * v.norm() * v);
+  if (S.liftAreaFront == 0 && S.liftAreaRear == 0) return;
+  // Lift on the air speed along the chassis' x, above the axles' wheel centres at the COM's height.
+  const double u = d.R[ch].col(0).dot(v);
+  const Eigen::Vector3d up = d.R[ch].col(2);
+  for (int axle = 0; axle < 2; ++axle) {
+    const double area = axle == 0 ? S.liftAreaFront : S.liftAreaRear;
+    const Vec3 centre = 0.5 * (vehicle_.layout.wheelCentreAtDesign[2 * axle] + vehicle_.layout.wheelCentreAtDesign[2 * axle + 1]);
+    const Vec3 at(centre.x(), com.y(), com.z());  // chassis frame
+    mb::addWorldForce(d, ch, mb::pointPosition(d, ch, at), area * u * u * up);
   }
 }
 
@@ -210,6 +271,12 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
     } else {
       c.brakeDeflection = 0;
     }
+  }
+  if (vehicle_.spec.powertrain) {
+    DrivelineState& s = driveline_;
+    s.clutchDeflection = s.command.ratio == 0.0 ? 0.0
+                                                : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
+                                                                          s.clutchDeflection, engineSpeed(d) - s.command.ratio * drivenSpeed(d), h);
   }
   lastAccepted_ = t;
   planesReady_ = true;

@@ -16,6 +16,12 @@
 // suspension travel, whatever the rung.
 //
 // Drive torques react where the vehicle file says (chassis, carrier or nowhere).
+// A car with a powertrain gets them from its driveline instead (powertrain.h):
+// the engine's torque on its crank joint (reacting on the chassis), the
+// clutch's torque from the crank into the gearbox, and the gearbox output
+// shared among the driven wheels by the differential, reacting on the chassis.
+// Aerodynamic lift is a force on the chassis above each axle (rolling
+// resistance is the tyre's, tyre/fiala.h).
 // Brakes hold without creep: the brake torque is a stiff torsional spring
 // (with damping) on the spin angle since the wheel last slipped, saturated
 // at the available brake torque; its deflection advances once per accepted
@@ -27,6 +33,7 @@
 
 #include "multibody/multibody_dae.h"
 #include "terrain/terrain.h"
+#include "vehicle/powertrain.h"
 #include "tyre/tyre_model.h"
 #include "vehicle/vehicle_builder.h"
 
@@ -59,6 +66,9 @@ class VehicleForces final : public mb::ForceProvider {
   // Inputs, held over a step.
   void setDriveTorque(int wheel, double torque) { wheels_[wheel].driveTorque = torque; }
   void setBrakeCapacity(int wheel, double torque) { wheels_[wheel].brakeCapacity = torque; }
+  // A powertrain's command for the next step (ignored without one).
+  void setDriveline(const DrivelineCommand& c) { driveline_.command = c; }
+  const DrivelineState& driveline() const { return driveline_; }
 
   bool needsBeginStep() const override { return !planesReady_; }
   void beginStep(const mb::Model& model, const mb::Data& data, double t) override;
@@ -74,13 +84,15 @@ class VehicleForces final : public mb::ForceProvider {
   // held inputs and latest outputs; the time of the last accepted step.
   struct State {
     std::array<WheelContact, 4> wheels;
+    DrivelineState driveline;
     double lastAccepted = 0;
     bool planesReady = false;
     bool operator==(const State&) const = default;
   };
-  State state() const { return {wheels_, lastAccepted_, planesReady_}; }
+  State state() const { return {wheels_, driveline_, lastAccepted_, planesReady_}; }
   void setState(const State& s) {
     wheels_ = s.wheels;
+    driveline_ = s.driveline;
     lastAccepted_ = s.lastAccepted;
     planesReady_ = s.planesReady;
   }
@@ -99,6 +111,13 @@ class VehicleForces final : public mb::ForceProvider {
   // The anti-roll bars (AntiRollBarSpec): forces between each wheel centre
   // and the chassis; on a planar model also its tyres' loads.
   void antiRollBars(mb::Data& data);
+  // The powertrain (powertrain.h): engine and clutch torques on the crank,
+  // the drive torques of the driven wheels into wheels_[w].driveTorque.
+  void powertrain(mb::Data& data, double h);
+  double engineSpeed(const mb::Data& data) const;
+  double drivenSpeed(const mb::Data& data) const;  // mean relative spin of the driven wheels, + forward
+  void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
+  void aerodynamics(mb::Data& data) const;
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(wheels_[w].modelLoad) : std::nullopt;
   }
@@ -108,6 +127,8 @@ class VehicleForces final : public mb::ForceProvider {
   TerrainContactOptions options_;
   std::array<tyre::Tyre, 4> tyres_;
   std::array<WheelContact, 4> wheels_;
+  DrivelineState driveline_;
+  std::vector<int> driven_;  // the driven wheels
   double lastAccepted_ = 0;
   bool planesReady_ = false;  // contact planes of the next step prepared at acceptance
 };

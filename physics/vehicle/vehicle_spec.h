@@ -6,11 +6,13 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "multibody/model.h"
 #include "tyre/tyre_model.h"
+#include "vehicle/powertrain_spec.h"
 #include "vehicle/vehicle_view.h"
 
 namespace bdfcar::vehicle {
@@ -110,6 +112,12 @@ struct VehicleSpec {
   double maxDriveTorque = 0;         // per driven wheel at full throttle, N m
   DriveReaction driveReaction = DriveReaction::Chassis;
   double dragArea = 0;               // aerodynamic 0.5 rho Cd A, N/(m/s)^2 (0 = none)
+  // Aerodynamic lift, 0.5 rho Cl A per axle, N/(m/s)^2: + lifts (- is
+  // downforce), acting on the chassis above each axle's wheel centres.
+  double liftAreaFront = 0, liftAreaRear = 0;
+  // A drivable car's engine, clutch, gearbox and differential; none on the
+  // reference vehicles, whose speed hold drives the wheels directly.
+  std::optional<PowertrainSpec> powertrain;
   VehicleGeometry geometry;          // for drawing
   std::map<std::string, Vec3> points;  // named hardpoints (left side), for reports
 };
