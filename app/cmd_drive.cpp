@@ -28,7 +28,7 @@ std::string defaultRecordDir() {
 }
 
 struct DriveArgs {
-  std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive.toml";
+  std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive_powertrain.toml";
   std::string record, replay, telemetry, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
   double seconds = 0;
   bool batch = false, noVsync = false, replayAnyway = false, scenarioGiven = false;
@@ -101,7 +101,7 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
   CLI::App* cmd = app.add_subcommand("drive", "Drive a scenario in a window with a wheel, controller, joystick or keyboard");
   auto a = std::make_shared<DriveArgs>();
   cmd->add_option("scenario", a->scenario,
-                  "Scenario file (default: the ISO course on the flat road; with --replay, the recording's)")
+                  "Scenario file (default: the drivable sedan at a standstill, the ISO course ahead on the flat road; with --replay, the recording's)")
       ->check(CLI::ExistingFile)
       ->each([a](const std::string&) { a->scenarioGiven = true; });
   cmd->add_option("--record", a->record, "Record the inputs of every tick to this file");

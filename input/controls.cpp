@@ -25,7 +25,7 @@ bool actionFlag(const Controls& controls, Action action) {
 }
 
 // Mapping-file names, in enum order.
-constexpr std::string_view kAxisNames[kAxisCount] = {"steering", "throttle", "brake", "clutch"};
+constexpr std::string_view kAxisNames[kAxisCount] = {"steering", "throttle", "brake", "clutch", "handbrake"};
 constexpr std::string_view kActionNames[kActionCount] = {"gear_up", "gear_down", "reset",  "pause",
                                                          "single_step", "camera", "view", "record", "quit", "rewind"};
 constexpr std::string_view kDeviceKindNames[] = {"keyboard", "wheel", "gamecontroller", "joystick"};

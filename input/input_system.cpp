@@ -153,7 +153,7 @@ void updateActive(State& s) {
     tell(s, spdlog::level::info, "driving with '" + active->name + "'");
     return;
   }
-  s.keyboardAnalog = {s.last.steering, s.last.throttle, s.last.brake, s.last.clutch};
+  s.keyboardAnalog = {s.last.steering, s.last.throttle, s.last.brake, s.last.clutch, s.last.handbrake};
   tell(s, spdlog::level::warn, "driving with the keyboard");
 }
 
@@ -174,6 +174,7 @@ void readDevice(const OpenDevice& d, Controls& c) {
   c.brake = value[static_cast<int>(Axis::Brake)];
   c.clutch = value[static_cast<int>(Axis::Clutch)];
   c.hasClutch = d.mapping->axes[static_cast<int>(Axis::Clutch)].bound;
+  c.handbrake = value[static_cast<int>(Axis::Handbrake)];
   c.source = d.kind;
 }
 
@@ -212,7 +213,7 @@ Controls InputSystem::poll(double dt) {
   updateActive(s);
   const KeyboardKeys& keys = s.keyboard.keys;
   const KeyboardHeld held{anyHeld(s, keys.steerLeft), anyHeld(s, keys.steerRight), anyHeld(s, keys.throttle),
-                          anyHeld(s, keys.brake), anyHeld(s, keys.clutch)};
+                          anyHeld(s, keys.brake), anyHeld(s, keys.clutch), anyHeld(s, keys.handbrake)};
   s.keyboardAnalog = rampKeyboard(s.keyboard.ramps, held, s.keyboardAnalog, dt);
   if (const OpenDevice* d = findDevice(s, s.activeId)) {
     readDevice(*d, c);
@@ -222,6 +223,7 @@ Controls InputSystem::poll(double dt) {
     c.brake = s.keyboardAnalog.brake;
     c.clutch = s.keyboardAnalog.clutch;
     c.hasClutch = !keys.clutch.empty();
+    c.handbrake = s.keyboardAnalog.handbrake;
     c.source = DeviceKind::Keyboard;
   }
   s.last = c;

@@ -27,6 +27,7 @@ KeyboardAnalog rampKeyboard(const KeyboardRamps& r, const KeyboardHeld& held, co
   next.throttle = rampPedal(r, held.throttle, previous.throttle, dt);
   next.brake = rampPedal(r, held.brake, previous.brake, dt);
   next.clutch = rampPedal(r, held.clutch, previous.clutch, dt);
+  next.handbrake = rampPedal(r, held.handbrake, previous.handbrake, dt);
   return next;
 }
 

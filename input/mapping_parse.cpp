@@ -130,13 +130,14 @@ void readForceFeedback(Table& root, DeviceMapping& m) {
 // [keys] and [ramps] of the keyboard.
 void readKeyboard(Table& root, DeviceMapping& m) {
   if (std::optional<Table> keys = root.optionalTable("keys")) {
-    keys->rejectUnknownKeys({"steer_left", "steer_right", "throttle", "brake", "clutch"});
+    keys->rejectUnknownKeys({"steer_left", "steer_right", "throttle", "brake", "clutch", "handbrake"});
     const CodeSpec spec = buttonSpec(DeviceKind::Keyboard);
     m.keys.steerLeft = readCodes(*keys, "steer_left", spec);
     m.keys.steerRight = readCodes(*keys, "steer_right", spec);
     m.keys.throttle = readCodes(*keys, "throttle", spec);
     m.keys.brake = readCodes(*keys, "brake", spec);
     m.keys.clutch = readCodes(*keys, "clutch", spec);
+    m.keys.handbrake = readCodes(*keys, "handbrake", spec);
   }
   if (std::optional<Table> ramps = root.optionalTable("ramps")) {
     ramps->rejectUnknownKeys({"steer_rate", "centre_rate", "pedal_rise_rate", "pedal_fall_rate"});

@@ -27,11 +27,17 @@ osg::Vec4 materialColour(const std::string& name, const osg::Vec4& paint) {
   return rgba(0.55, 0.55, 0.55);
 }
 
-// Geode of all OBJ parts, flat-shaded unless the file gives normals.
-osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& paint) {
-  TriangleBuilder tb;
+// Tail lights unlit (they glow, whatever the sun): dark red, bright when braking.
+const osg::Vec4 kTailLightOff = rgba(0.42, 0.03, 0.03), kTailLightOn = rgba(1.0, 0.12, 0.08);
+
+// Geode of all OBJ parts, flat-shaded unless the file gives normals; the
+// tail lights ("taillight") in a drawable of their own (lights).
+osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& paint, osg::ref_ptr<osg::Geometry>& lights) {
+  TriangleBuilder body, tail;
   for (const ObjPart& part : mesh.parts) {
-    const osg::Vec4 colour = materialColour(part.material, paint);
+    const bool isLight = part.material == "taillight";
+    TriangleBuilder& tb = isLight ? tail : body;
+    const osg::Vec4 colour = isLight ? kTailLightOff : materialColour(part.material, paint);
     for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3) {
       const osg::Vec3 a(part.corners[i].x(), part.corners[i].y(), part.corners[i].z());
       const osg::Vec3 b(part.corners[i + 1].x(), part.corners[i + 1].y(), part.corners[i + 1].z());
@@ -47,7 +53,12 @@ osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& pain
     }
   }
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-  geode->addDrawable(tb.build());
+  geode->addDrawable(body.build());
+  if (!tail.v->empty()) {
+    lights = tail.build();
+    lights->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    geode->addDrawable(lights.get());
+  }
   return geode;
 }
 
@@ -131,7 +142,7 @@ BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::strin
     body.warning = "body mesh '" + geometry.bodyMesh + "' not found: drawing a box";
   } else if (!path.empty()) {
     try {
-      geode = geodeFromObj(loadObj(path), paint);
+      geode = geodeFromObj(loadObj(path), paint, body.tailLights);
       body.source = path;
     } catch (const std::exception& e) {
       body.warning = std::string(e.what()) + ": drawing a box";
@@ -147,6 +158,14 @@ BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::strin
   body.translucent = translucentState(*body.solid);
   body.node->setStateSet(body.solid.get());
   return body;
+}
+
+void setBrakeLights(BodyNode& body, bool on) {
+  if (!body.tailLights || body.brakeLightsOn == on) return;
+  body.brakeLightsOn = on;
+  auto* colours = static_cast<osg::Vec4Array*>(body.tailLights->getColorArray());
+  for (osg::Vec4& c : *colours) c = on ? kTailLightOn : kTailLightOff;
+  colours->dirty();
 }
 
 // Swaps the body's state set and visibility.

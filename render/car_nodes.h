@@ -1,6 +1,7 @@
 // Private to render/: the car's parts as OSG nodes (body, wheels, suspension links).
 #pragma once
 
+#include <osg/Geometry>
 #include <osg/Group>
 #include <osg/MatrixTransform>
 #include <osg/StateSet>
@@ -18,6 +19,8 @@ struct BodyNode {
   osg::ref_ptr<osg::StateSet> solid, translucent;    // swapped by applyBodyDisplay
   std::string source;                                // file the mesh came from, or "box"
   std::string warning;                               // why the box fallback is drawn, if it is
+  osg::ref_ptr<osg::Geometry> tailLights;            // the mesh's "taillight" parts (none on the box)
+  bool brakeLightsOn = false;
 };
 
 // First existing file among: path as given, under assetRoot, under the source tree; "" if none.
@@ -26,6 +29,9 @@ std::string resolveAssetPath(const std::string& path, const std::string& assetRo
 // The body from geometry.bodyMesh (OBJ, chassis frame; material "paint" takes bodyColour),
 // or a two-box body of geometry's size when the file is missing or unreadable.
 BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::string& assetRoot);
+
+// Brake lights on (the tail lights bright) or off.
+void setBrakeLights(BodyNode& body, bool on);
 
 // Solid, see-through (the links inside show) or hidden body.
 void applyBodyDisplay(BodyNode& body, BodyDisplay display);

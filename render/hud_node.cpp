@@ -12,7 +12,7 @@
 namespace bdfcar::render {
 namespace {
 
-constexpr int kFigureColumns = 18, kFigureLines = 7;
+constexpr int kFigureColumns = 21, kFigureLines = 7;
 
 // A bold monospaced TrueType font if one is installed, else OSG's built-in font.
 osg::ref_ptr<osgText::Font> loadFont(bool& unicode) {
@@ -111,7 +111,19 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   fig += format("RTF   %6.2f x\n", hud.realTimeFactor);
   fig += format("step  %6.0f us\n", hud.stepTime * 1e6);
   fig += format("thr %3.0f%%  brk %3.0f%%", 100 * std::clamp(hud.throttle, 0.0, 1.0), 100 * std::clamp(hud.brake, 0.0, 1.0));
+  if (hud.powertrain) {
+    const std::string gear = hud.gear < 0 ? "R" : hud.gear == 0 ? "N" : std::to_string(hud.gear);
+    fig += format("\ngear %-2s%s %5.0f rpm%s", gear.c_str(), hud.shifting ? ">" : " ", hud.engineRpm,
+                  hud.handbrake > 0.05 ? " HB" : "");
+  }
   setIfChanged(*figures_, fig);
+  const int figureLines = hud.powertrain ? kFigureLines + 1 : kFigureLines;
+  if (figureLines != figureLines_) {
+    figureLines_ = figureLines;
+    const int w = width_, h = height_;
+    width_ = 0;  // the figures' panel grows by a line
+    layout(w, h);
+  }
 
   std::string right = format("t %7.2f s\n%s", hud.time, cameraName(camera));
   if (body != BodyDisplay::Solid) right += format(" / body %s", bodyDisplayName(body));
@@ -146,7 +158,7 @@ void HudNode::layout(int width, int height) {
   message_->setPosition(osg::Vec3(width / 2.0f, margin + pad, 0));
 
   osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-  addRect(*v, margin, height - margin - 2 * pad - kFigureLines * lineHeight, margin + 2 * pad + kFigureColumns * charWidth,
+  addRect(*v, margin, height - margin - 2 * pad - figureLines_ * lineHeight, margin + 2 * pad + kFigureColumns * charWidth,
           height - margin);
   addRect(*v, width - margin - 2 * pad - 18 * charWidth, height - margin - 2 * pad - courseLines_ * lineHeight,
           width - margin, height - margin);

@@ -74,6 +74,8 @@ void Scene::Impl::update(const vehicle::VehicleView& view, const vehicle::HudInf
   shadow->setMatrix(osg::Matrixd::rotate(headingOf(view.chassis), osg::Vec3d(0, 0, 1)) *
                     osg::Matrixd::translate(centre.x(), centre.y(), ground->heightOr(centre.x(), centre.y(), 0.0) + 0.02));
   lastHud = info;
+  // A brake lamp switch: any brake pedal travel (the handbrake lights nothing).
+  setBrakeLights(body, info.brake > 0.02);
   hud.update(info, cameraMode, display);
 }
 

@@ -21,6 +21,21 @@ std::string nextRecordingName(const std::string& dir) {
 
 constexpr double kMessageSeconds = 4.0;
 
+// A person's controls as the simulation's input: the gear paddles or keys as
+// one request (up wins over down in the same tick), a clutch pedal only from
+// a device's axis (a keyboard's clutch key opens the automatic clutch).
+scenario::DriverInput driverInput(const input::Controls& c) {
+  scenario::DriverInput in;
+  in.steer = c.steering;
+  in.throttle = c.throttle;
+  in.brake = c.brake;
+  in.handbrake = c.handbrake;
+  in.clutch = c.clutch;
+  in.clutchPedal = c.hasClutch && c.source != input::DeviceKind::Keyboard;
+  in.shift = c.gearUp ? 1 : c.gearDown ? -1 : 0;
+  return in;
+}
+
 }  // namespace
 
 TickHandler::TickHandler(DriveSession& session, const InteractiveOptions& options)
@@ -78,7 +93,7 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
     }
     if (out.quit) return out;
     if ((!paused_ || step) && !session_.failed() && !session_.finished())
-      session_.tick(scenario::DriverInput{c.steering, c.throttle, c.brake});
+      session_.tick(driverInput(c));
   } else if ((!paused_ || step) && !session_.failed() && !session_.finished()) {
     advance();
   }

@@ -93,6 +93,14 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   }
   h.throttle = sim_->lastInput().throttle;
   h.brake = sim_->lastInput().brake;
+  if (const scenario::Transmission* t = sim_->transmission()) {
+    const scenario::PowertrainChannels p = sim_->powertrainChannels();
+    h.powertrain = true;
+    h.gear = p.gear;
+    h.engineRpm = p.engineRpm;
+    h.shifting = t->shifting();
+    h.handbrake = p.handbrake;
+  }
   if (const auto c = run_->course()) {
     h.coneHits = c->coneHits;
     h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;

@@ -32,7 +32,8 @@ std::string absolute(const std::string& p) {
 InputRecorder::InputRecorder(const std::string& path, const scenario::ScenarioSpec& spec) : file_(path) {
   char tick[64];
   std::snprintf(tick, sizeof tick, "tick %a\n", spec.tick);
-  file_.append("# bdfcar input recording: one line per driver tick: tick steer throttle brake (hex floats);\n"
+  file_.append("# bdfcar input recording: one line per driver tick: tick steer throttle brake handbrake clutch\n"
+               "# (hex floats) clutch_pedal shift (integers: 1 a pedal works the clutch; +1 / -1 a gear request);\n"
                "# 'reset' and 'rewind' lines are the driver's restart and rewind between ticks\n"
                "scenario " + absolute(spec.sourceFile) + "\n" +
                "scenario_hash " + fileContentHash(spec.sourceFile) + "\n" +
@@ -46,8 +47,8 @@ void InputRecorder::record(const RecordedTick& e) {
   int n = 0;
   switch (e.kind) {
     case RecordedTick::Kind::Input:
-      n = std::snprintf(line, sizeof line, "%ld %a %a %a\n", inputs_++, e.input.steer, e.input.throttle,
-                        e.input.brake);
+      n = std::snprintf(line, sizeof line, "%ld %a %a %a %a %a %d %d\n", inputs_++, e.input.steer, e.input.throttle,
+                        e.input.brake, e.input.handbrake, e.input.clutch, e.input.clutchPedal ? 1 : 0, e.input.shift);
       break;
     case RecordedTick::Kind::Reset: n = std::snprintf(line, sizeof line, "reset\n"); break;
     case RecordedTick::Kind::Rewind: n = std::snprintf(line, sizeof line, "rewind\n"); break;
@@ -102,19 +103,34 @@ Recording readRecording(const std::string& path) {
     }
     std::istringstream t(line);
     long tick;
-    std::string a, b, c;
-    if (!(t >> tick >> a >> b >> c) || tick != inputs)
-      fail("expected 'tick steer throttle brake' with consecutive ticks from 0, or an event (reset, rewind)");
+    std::vector<std::string> f;
+    if (!(t >> tick) || tick != inputs)
+      fail("expected 'tick steer throttle brake [handbrake clutch clutch_pedal shift]' with consecutive ticks "
+           "from 0, or an event (reset, rewind)");
+    for (std::string w; t >> w;) f.push_back(w);
+    // Recordings made before the powertrain have the first three values only.
+    if (f.size() != 3 && f.size() != 7)
+      fail("expected 3 values (steer throttle brake) or 7 (and handbrake clutch clutch_pedal shift), got " +
+           std::to_string(f.size()));
     scenario::DriverInput d;
+    double* numbers[] = {&d.steer, &d.throttle, &d.brake, &d.handbrake, &d.clutch};
     try {
-      d.steer = std::stod(a);
-      d.throttle = std::stod(b);
-      d.brake = std::stod(c);
+      for (std::size_t i = 0; i < std::min<std::size_t>(f.size(), 5); ++i) {
+        std::size_t used = 0;
+        *numbers[i] = std::stod(f[i], &used);
+        if (used != f[i].size()) throw std::invalid_argument(f[i]);
+      }
     } catch (const std::exception&) {
-      fail("expected three numbers");
+      fail("expected numbers for steer, throttle, brake, handbrake and clutch");
     }
-    if (!std::isfinite(d.steer) || !std::isfinite(d.throttle) || !std::isfinite(d.brake))
-      fail("expected finite numbers");
+    for (double* x : numbers)
+      if (!std::isfinite(*x)) fail("expected finite numbers");
+    if (f.size() == 7) {
+      if (f[5] != "0" && f[5] != "1") fail("expected clutch_pedal 0 or 1, got '" + f[5] + "'");
+      if (f[6] != "0" && f[6] != "1" && f[6] != "-1") fail("expected shift -1, 0 or 1, got '" + f[6] + "'");
+      d.clutchPedal = f[5] == "1";
+      d.shift = std::stoi(f[6]);
+    }
     r.entries.push_back({RecordedTick::Kind::Input, d});
     ++inputs;
   }

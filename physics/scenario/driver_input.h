@@ -10,8 +10,10 @@ struct DriverInput {
   double brake = 0.0;     // [0, 1]
   // For a car with a powertrain (ignored without one):
   double handbrake = 0.0; // [0, 1], on the rear wheels
-  double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); used when clutchPedal
-  bool clutchPedal = false;  // a clutch pedal is mapped: the driver works the clutch (else it is automatic)
+  double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged)
+  // A clutch pedal: the driver works the clutch (engagement 1 - clutch).
+  // Without one the clutch is automatic, and `clutch` (a key) only opens it further.
+  bool clutchPedal = false;
   int shift = 0;          // +1 up, -1 down: a request made in this tick
   bool operator==(const DriverInput&) const = default;
 };

@@ -79,6 +79,8 @@ vehicle::DrivelineCommand Transmission::update(const DriverInput& in, const Driv
   } else {
     const double step = kEngagementRate * h;
     state_.engagement += std::clamp(target - state_.engagement, -step, step);
+    // A clutch key held over the automatic clutch opens it as far as it is pressed.
+    state_.engagement = std::min(state_.engagement, 1.0 - std::clamp(in.clutch, 0.0, 1.0));
   }
   vehicle::DrivelineCommand c;
   c.throttle = throttle;

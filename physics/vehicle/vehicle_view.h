@@ -61,6 +61,12 @@ struct HudInfo {
   double realTimeFactor = 0.0;      // simulated / wall time
   double stepTime = 0.0;            // s of wall time per 10 ms physics step
   double throttle = 0.0, brake = 0.0;  // 0..1
+  // A car with a powertrain: its gear (-1 R, 0 N, 1..n) and engine speed.
+  bool powertrain = false;
+  int gear = 0;
+  double engineRpm = 0.0;
+  bool shifting = false;
+  double handbrake = 0.0;           // 0..1
   int coneHits = -1;                // -1 = not on a cone course
   double courseTime = -1.0;         // s, -1 = not timing
   std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)

@@ -11,8 +11,8 @@ namespace bdfcar::input {
 enum class DeviceKind { Keyboard, Wheel, GameController, Joystick };
 
 // The analog controls a mapping can bind to an axis (or, for the keyboard, ramp).
-enum class Axis { Steering, Throttle, Brake, Clutch };
-inline constexpr int kAxisCount = 4;
+enum class Axis { Steering, Throttle, Brake, Clutch, Handbrake };
+inline constexpr int kAxisCount = 5;
 
 // Edge-triggered commands: true in the one tick in which the button went down.
 enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit, Rewind };
@@ -25,6 +25,7 @@ struct Controls {
   double brake = 0.0;     // [0, 1]
   double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); 0 unless hasClutch
   bool hasClutch = false; // the active device's mapping binds a clutch
+  double handbrake = 0.0; // [0, 1], 1 = pulled fully
 
   // Edge-triggered, from every connected device and the keyboard together.
   bool gearUp = false;
@@ -45,7 +46,7 @@ struct Controls {
 bool& actionFlag(Controls& controls, Action action);
 bool actionFlag(const Controls& controls, Action action);
 
-// The name used in mapping files: "steering", "throttle", "brake", "clutch".
+// The name used in mapping files: "steering", "throttle", "brake", "clutch", "handbrake".
 std::string_view axisName(Axis axis);
 
 // The name used in mapping files: "gear_up", "reset", "single_step", "rewind", ...

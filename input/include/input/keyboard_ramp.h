@@ -7,11 +7,11 @@
 namespace bdfcar::input {
 
 struct KeyboardHeld {
-  bool left = false, right = false, throttle = false, brake = false, clutch = false;
+  bool left = false, right = false, throttle = false, brake = false, clutch = false, handbrake = false;
 };
 
 struct KeyboardAnalog {
-  double steering = 0.0, throttle = 0.0, brake = 0.0, clutch = 0.0;
+  double steering = 0.0, throttle = 0.0, brake = 0.0, clutch = 0.0, handbrake = 0.0;
 };
 
 // The keyboard's analog values one tick of dt seconds after `previous`:

@@ -44,7 +44,7 @@ struct ForceFeedbackMapping {
 
 // Keys that drive the analog controls (SDL scancode numbers).
 struct KeyboardKeys {
-  std::vector<int> steerLeft, steerRight, throttle, brake, clutch;
+  std::vector<int> steerLeft, steerRight, throttle, brake, clutch, handbrake;
 };
 
 // Keyboard ramp rates in 1/s: no bang-bang steering or pedals.
