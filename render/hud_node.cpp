@@ -108,7 +108,7 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   fig += format("steer %+7.1f%s\n", hud.steeringWheelAngle * 180.0 / M_PI, deg);
   fig += format("a_y   %+6.2f %s\n", hud.lateralAcceleration, accel);
   fig += format("yaw   %+6.1f%s/s\n", hud.yawRate * 180.0 / M_PI, deg);
-  fig += format("RTF   %6.2f x\n", hud.realTimeFactor);
+  fig += format("%-6s%6.2f x\n", hud.realTimeLabel.c_str(), hud.realTimeFactor);
   fig += format("step  %6.0f us\n", hud.stepTime * 1e6);
   fig += format("thr %3.0f%%  brk %3.0f%%", 100 * std::clamp(hud.throttle, 0.0, 1.0), 100 * std::clamp(hud.brake, 0.0, 1.0));
   if (hud.powertrain) {
@@ -130,14 +130,23 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   if (!hud.model.empty()) right += "\nmodel " + hud.model;
   if (hud.coneHits >= 0) right += format("\ncones hit %d", hud.coneHits);
   if (hud.courseTime >= 0) right += format("\ncourse %6.2f s", hud.courseTime);
+  if (!hud.verdict.empty()) right += "\n" + hud.verdict;
   setIfChanged(*course_, right);
   setIfChanged(*message_, hud.message);
 
   const bool showMessage = !hud.message.empty();
   const int courseLines = 1 + static_cast<int>(std::count(right.begin(), right.end(), '\n'));
-  if (showMessage != showMessage_ || courseLines != courseLines_) {
+  // The panel as wide as its longest line (the verdict's may be), 18 columns at least.
+  int courseColumns = 18;
+  for (std::size_t start = 0; start <= right.size();) {
+    const std::size_t end = std::min(right.find('\n', start), right.size());
+    courseColumns = std::max(courseColumns, static_cast<int>(end - start));
+    start = end + 1;
+  }
+  if (showMessage != showMessage_ || courseLines != courseLines_ || courseColumns != courseColumns_) {
     showMessage_ = showMessage;
     courseLines_ = courseLines;
+    courseColumns_ = courseColumns;
     const int w = width_, h = height_;
     width_ = 0;  // force the panels to be rebuilt
     layout(w, h);
@@ -160,7 +169,7 @@ void HudNode::layout(int width, int height) {
   osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
   addRect(*v, margin, height - margin - 2 * pad - figureLines_ * lineHeight, margin + 2 * pad + kFigureColumns * charWidth,
           height - margin);
-  addRect(*v, width - margin - 2 * pad - 18 * charWidth, height - margin - 2 * pad - courseLines_ * lineHeight,
+  addRect(*v, width - margin - 2 * pad - float(courseColumns_) * charWidth, height - margin - 2 * pad - courseLines_ * lineHeight,
           width - margin, height - margin);
   if (showMessage_) {
     const float half = std::min(0.48f * width, 0.5f * charWidth * float(message_->getText().size()) + pad);

@@ -35,6 +35,7 @@ class HudNode {
   int width_ = 0, height_ = 0;
   bool showMessage_ = false;
   int courseLines_ = 2;
+  int courseColumns_ = 18;
   int figureLines_ = 7;  // kFigureLines, one more with a powertrain
 };
 

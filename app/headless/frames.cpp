@@ -56,7 +56,9 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
       const auto t0 = Clock::now();
       const vehicle::VehicleView view = session.view();
       const double wall = seconds(t0 - wall0);
-      scene.update(view, session.hud(wall > 0 ? (session.time() - sim0) / wall : 0.0, lastStep, ""));
+      vehicle::HudInfo hud = session.hud(wall > 0 ? (session.time() - sim0) / wall : 0.0, lastStep, "");
+      hud.realTimeLabel = "render";  // simulated time per wall second, drawing and encoding included
+      scene.update(view, hud);
       const render::Frame& f = renderer.render();
       r.stats.frame(seconds(Clock::now() - t0));
       const auto t1 = Clock::now();

@@ -59,6 +59,10 @@ struct HudInfo {
   double lateralAcceleration = 0.0; // m/s^2
   double yawRate = 0.0;             // rad/s
   double realTimeFactor = 0.0;      // simulated / wall time
+  // What that ratio measures: "RTF" a live drive's (paced at 1, over the
+  // last second), "render" frames drawn without a display (simulation,
+  // drawing and encoding together: the rendering's speed, not the car's).
+  std::string realTimeLabel = "RTF";
   double stepTime = 0.0;            // s of wall time per 10 ms physics step
   double throttle = 0.0, brake = 0.0;  // 0..1
   // A car with a powertrain: its gear (-1 R, 0 N, 1..n) and engine speed.
@@ -69,6 +73,9 @@ struct HudInfo {
   double handbrake = 0.0;           // 0..1
   int coneHits = -1;                // -1 = not on a cone course
   double courseTime = -1.0;         // s, -1 = not timing
+  // The course's verdict the moment it is decided: "" while open, else
+  // "PASSED" or "FAILED: why".
+  std::string verdict;
   std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)
   std::string message;              // status line (paused, recording, diverged, ...)
 };
