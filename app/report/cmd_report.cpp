@@ -275,6 +275,7 @@ int runReport(const ReportArgs& a) {
       {"fidelity", [&] { fidelitySection(md, a.repeats, imageDir.string()); }},
       {"standard", [&] { standardTestsSection(md); }},
       {"sweep", [&] { sweepSection(md, imageDir.string()); }},
+      {"powertrain", [&] { powertrainSection(md, a.repeats); }},
       {"work-precision", [&] { workPrecisionSection(md, imageDir.string()); }},
       {"survival", [&] { survivalSection(md); }},
   };
@@ -303,7 +304,7 @@ void addReportCommand(CLI::App& app, CommandList& commands) {
                   "Only these sections (reference, topologies, tables, explicit, hard, speed, fidelity, "
                   "standard, sweep, work-precision, survival): a partial file, for working on one")
       ->check(CLI::IsMember({"reference", "topologies", "tables", "explicit", "hard", "speed", "fidelity",
-                             "standard", "sweep", "work-precision", "survival"}));
+                             "standard", "sweep", "powertrain", "work-precision", "survival"}));
   commands.push_back({cmd, [a] { return reportErrors([&] { return runReport(*a); }); }});
 }
 

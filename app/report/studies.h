@@ -65,6 +65,8 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
 
 // Section of RESULTS.md: the reference sedan's vehicle sheet and standard-test metrics.
 void standardTestsSection(std::ostream& md);
+// The drivable sedan's powertrain: gears, a full-throttle run, its cost per step.
+void powertrainSection(std::ostream& md, int repeats);
 // The shipped sweep's summary and plots (images under imageDir).
 void sweepSection(std::ostream& md, const std::string& imageDir);
 
