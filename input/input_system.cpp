@@ -170,6 +170,8 @@ void readDevice(const OpenDevice& d, Controls& c) {
     if (a.bound) value[i] = axisResponse(a, static_cast<Axis>(i), rawAxis(d, a.axis));
   }
   c.steering = value[static_cast<int>(Axis::Steering)];
+  const AxisMapping& steer = d.mapping->axes[static_cast<int>(Axis::Steering)];
+  if (steer.bound && steer.rotationDeg > 0) c.steeringWheelAngle = c.steering * 0.5 * steer.rotationDeg * M_PI / 180.0;
   c.throttle = value[static_cast<int>(Axis::Throttle)];
   c.brake = value[static_cast<int>(Axis::Brake)];
   c.clutch = value[static_cast<int>(Axis::Clutch)];

@@ -86,8 +86,11 @@ void readDevice(Table& root, DeviceMapping& m) {
 }
 
 // One [axes.<control>] table.
-AxisMapping readAxis(Table& t, DeviceKind kind) {
-  t.rejectUnknownKeys({"axis", "invert", "deadzone", "gain", "curve", "exponent", "min", "max"});
+AxisMapping readAxis(Table& t, DeviceKind kind, Axis control) {
+  if (control == Axis::Steering)
+    t.rejectUnknownKeys({"axis", "invert", "deadzone", "gain", "curve", "exponent", "min", "max", "rotation_deg"});
+  else
+    t.rejectUnknownKeys({"axis", "invert", "deadzone", "gain", "curve", "exponent", "min", "max"});
   AxisMapping a;
   a.bound = true;
   a.axis = readCode(t, "axis", axisSpec(kind));
@@ -97,6 +100,7 @@ AxisMapping readAxis(Table& t, DeviceKind kind) {
   a.curve = t.choice("curve", {"linear", "power"}, "linear") == "power" ? Curve::Power : Curve::Linear;
   if (t.has("exponent") && a.curve != Curve::Power) t.reject("exponent", "no exponent unless curve = \"power\"");
   a.exponent = t.numberIn("exponent", Range{0.0, 10.0, true, false}, 1.0);
+  if (control == Axis::Steering) a.rotationDeg = t.numberIn("rotation_deg", Range{0.0, 3600.0, true, false}, 0.0);
   // Triggers rest at 0, sticks and pedals span the whole raw range.
   const bool trigger = kind == DeviceKind::GameController && sdl_names::isControllerTrigger(a.axis);
   a.rawMin = static_cast<int>(t.integerIn("min", kRawLo, kRawHi, trigger ? 0 : kRawLo));
@@ -114,7 +118,7 @@ void readAxes(Table& root, DeviceMapping& m) {
   for (int i = 0; i < kAxisCount; ++i) names.push_back(axisName(static_cast<Axis>(i)));
   axes->rejectUnknownKeys(names);
   for (int i = 0; i < kAxisCount; ++i)
-    if (std::optional<Table> t = axes->optionalTable(std::string(names[i]))) m.axes[i] = readAxis(*t, m.kind);
+    if (std::optional<Table> t = axes->optionalTable(std::string(names[i]))) m.axes[i] = readAxis(*t, m.kind, static_cast<Axis>(i));
 }
 
 // [force_feedback]: present means on unless enabled = false.

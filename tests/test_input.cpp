@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "input/axis_response.h"
+#include "input/driver_controls.h"
 #include "input/force_feedback.h"
 #include "input/input_system.h"
 #include "input/mapping.h"
@@ -467,6 +468,10 @@ TEST(InputMapping, BadFilesNameFileLineKeyAndExpectation) {
   const BadFile cases[] = {
       {"unknown_key.toml", "[device]\ntype = \"wheel\"\n\n[axes.steering]\naxis = 0\ndeadzon = 0.1\n", 6,
        "axes.steering.deadzon", "deadzone"},
+      {"rotation_on_pedal.toml", "[device]\ntype = \"wheel\"\n[axes.throttle]\naxis = 2\nrotation_deg = 900\n", 5,
+       "axes.throttle.rotation_deg", "deadzone"},
+      {"rotation_range.toml", "[device]\ntype = \"wheel\"\n[axes.steering]\naxis = 0\nrotation_deg = 0\n", 5,
+       "axes.steering.rotation_deg", "a number in (0, 3600], got 0"},
       {"deadzone_range.toml", "[device]\ntype = \"wheel\"\n[axes.steering]\naxis = 0\n\ndeadzone = 1.5\n", 6,
        "axes.steering.deadzone", "a number in [0, 1), got 1.5"},
       {"wrong_type.toml", "[device]\ntype = \"joystick\"\n[axes.brake]\naxis = 1\ngain = \"high\"\n", 5,
@@ -596,3 +601,44 @@ TEST(InputMapping, ForceFeedbackLevelFollowsGainInvertAndClamps) {
 }
 
 }  // namespace
+
+// A wheel whose mapping gives its rotation turns the car's steering wheel by
+// its own angle (a 900 degree wheel at 20 % of its travel: 90 degrees; on a
+// car with full lock at 210 degrees, 90 / 210 of full input), clamped at the
+// car's lock; without it, full travel is full lock.
+TEST(DriverControls, AWheelsRotationSteersTheCarsWheelByItsOwnAngle) {
+  const DeviceMapping m = parseMapping("[device]\ntype = \"wheel\"\n[axes.steering]\naxis = 0\nrotation_deg = 900\n", "w.toml");
+  EXPECT_EQ(m.axes[static_cast<int>(Axis::Steering)].rotationDeg, 900.0);
+  const double deg = M_PI / 180.0, full = 210 * deg;
+  Controls c;
+  c.source = DeviceKind::Wheel;
+  c.steering = 0.2;
+  c.steeringWheelAngle = 0.2 * 450 * deg;
+  EXPECT_NEAR(toDriverInput(c, full).steer, 90.0 / 210.0, 1e-12);
+  c.steering = -0.8;
+  c.steeringWheelAngle = -0.8 * 450 * deg;
+  EXPECT_EQ(toDriverInput(c, full).steer, -1.0);  // 360 degrees: past the car's lock
+  c.steeringWheelAngle = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(toDriverInput(c, full).steer, -0.8);
+}
+
+// A clutch pedal is a device's clutch axis; the keyboard's clutch key is not
+// (it opens the automatic clutch); gear up wins over down in one tick.
+TEST(DriverControls, PedalsGearsAndHandbrakeReachTheSimulation) {
+  Controls c;
+  c.source = DeviceKind::Keyboard;
+  c.hasClutch = true;
+  c.clutch = 1.0;
+  c.handbrake = 0.7;
+  c.gearUp = c.gearDown = true;
+  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0);
+  EXPECT_FALSE(in.clutchPedal);
+  EXPECT_EQ(in.clutch, 1.0);
+  EXPECT_EQ(in.handbrake, 0.7);
+  EXPECT_EQ(in.shift, 1);
+  c.source = DeviceKind::Wheel;
+  c.gearUp = false;
+  in = toDriverInput(c, 1.0);
+  EXPECT_TRUE(in.clutchPedal);
+  EXPECT_EQ(in.shift, -1);
+}

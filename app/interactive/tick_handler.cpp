@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "input/driver_controls.h"
 #include "interactive/drive_loop.h"
 
 namespace bdfcar::app {
@@ -20,21 +21,6 @@ std::string nextRecordingName(const std::string& dir) {
 }
 
 constexpr double kMessageSeconds = 4.0;
-
-// A person's controls as the simulation's input: the gear paddles or keys as
-// one request (up wins over down in the same tick), a clutch pedal only from
-// a device's axis (a keyboard's clutch key opens the automatic clutch).
-scenario::DriverInput driverInput(const input::Controls& c) {
-  scenario::DriverInput in;
-  in.steer = c.steering;
-  in.throttle = c.throttle;
-  in.brake = c.brake;
-  in.handbrake = c.handbrake;
-  in.clutch = c.clutch;
-  in.clutchPedal = c.hasClutch && c.source != input::DeviceKind::Keyboard;
-  in.shift = c.gearUp ? 1 : c.gearDown ? -1 : 0;
-  return in;
-}
 
 }  // namespace
 
@@ -93,7 +79,7 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
     }
     if (out.quit) return out;
     if ((!paused_ || step) && !session_.failed() && !session_.finished())
-      session_.tick(driverInput(c));
+      session_.tick(input::toDriverInput(c, session_.simulation().vehicle().spec.steering.steeringWheelFull));
   } else if ((!paused_ || step) && !session_.failed() && !session_.finished()) {
     advance();
   }

@@ -3,6 +3,7 @@
 // DriverInput (input/ uses only physics/config, to read its mapping files).
 #pragma once
 
+#include <limits>
 #include <string_view>
 
 namespace bdfcar::input {
@@ -21,6 +22,9 @@ inline constexpr int kActionCount = 10;
 struct Controls {
   // Analog, from the active device (the highest-ranked connected one, else the keyboard).
   double steering = 0.0;  // [-1, 1], + = left
+  // The device's steering angle, rad (+ left), where its mapping gives the
+  // wheel's rotation (rotation_deg): steering x half the rotation. NaN: not known.
+  double steeringWheelAngle = std::numeric_limits<double>::quiet_NaN();
   double throttle = 0.0;  // [0, 1]
   double brake = 0.0;     // [0, 1]
   double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); 0 unless hasClutch

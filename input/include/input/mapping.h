@@ -33,6 +33,10 @@ struct AxisMapping {
   double exponent = 1.0; // curve = Power: curve(x) = x^exponent
   int rawMin = -32768;   // calibrated raw value at full left (steering) or pedal released
   int rawMax = 32767;    // calibrated raw value at full right (steering) or pedal fully down
+  // Steering only: the wheel's rotation from lock to lock (a 900 degree
+  // wheel: 900), so that its angle turns the car's steering wheel by as
+  // much (controls.h, steeringWheelAngle). 0: not given (full input = full lock).
+  double rotationDeg = 0.0;
 };
 
 // Constant-force steering torque through SDL haptic, if the device has it.
