@@ -65,6 +65,7 @@ Scene::Impl::Impl(const SceneConfig& cfg)
 // Places every moving part from the physics' world poses.
 void Scene::Impl::update(const vehicle::VehicleView& view, const vehicle::HudInfo& info) {
   chassisPose = view.chassis;
+  chase.update(headingOf(view.chassis), view.time);
   chassis->setMatrix(poseMatrix(view.chassis));
   for (int i = 0; i < 4; ++i) wheels[i]->setMatrix(poseMatrix(view.wheels[i].pose));
   links.update(view.links);

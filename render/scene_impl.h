@@ -43,6 +43,7 @@ struct Scene::Impl {
   BodyDisplay display = BodyDisplay::Solid;
   OrbitState orbit;
   vehicle::BodyPose chassisPose;
+  ChaseHeading chase;  // the chase camera's lagging heading
   vehicle::HudInfo lastHud;
   std::vector<std::string> warnings;
 };

@@ -284,5 +284,35 @@ TEST(RenderGeometry, ChaseCameraSitsBehindAndAboveTheCarWhateverItsHeading) {
   EXPECT_NEAR(headingOf(pose), 1.0, 1e-12);
 }
 
+
+// The chase camera's heading follows the car's on a critically damped spring:
+// after a step of the car's heading the lag is e0 (1 + w t) exp(-w t) (its
+// motion over a frame is exact), and in a steady turn at yaw rate r it
+// settles 2 r / w behind, less the half frame by which each frame's target
+// leads (r dt / 2: a staircase through the ramp's frame values).
+TEST(RenderGeometry, ChaseCameraHeadingLagsTheCarsOnACriticallyDampedSpring) {
+  const double w = ChaseHeading::kOmega, dt = 1.0 / 60.0, step = 0.5;
+  ChaseHeading h;
+  h.update(0.0, 0.0);
+  for (int i = 1; i <= 90; ++i) {
+    const double t = i * dt;
+    const double lag = step - h.update(step, t);
+    if (i % 15 == 0) {
+      EXPECT_NEAR(lag, step * (1 + w * t) * std::exp(-w * t), 1e-12) << "t = " << t;
+    }
+  }
+  ChaseHeading turn;
+  const double r = 20.0 * M_PI / 180.0;
+  double car = 0;
+  for (int i = 0; i <= 600; ++i) turn.update(car = r * i * dt, i * dt);
+  EXPECT_NEAR(car - turn.heading(), 2 * r / w - r * dt / 2, 1e-3 * 2 * r / w);
+  // Across the +-pi seam it goes the short way; a rewind (time going back) snaps it.
+  ChaseHeading seam;
+  seam.update(M_PI - 0.05, 0.0);
+  seam.update(-M_PI + 0.05, dt);
+  EXPECT_GT(std::remainder(seam.heading() - (M_PI - 0.05), 2 * M_PI), 0.0);  // turned through +pi, not back through 0
+  EXPECT_EQ(seam.update(1.0, 0.0), 1.0);
+}
+
 }  // namespace
 }  // namespace bdfcar::render
