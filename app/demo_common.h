@@ -26,6 +26,11 @@ std::string demoTelemetryPath(const DemoOptions& o);
 // After the run: plots, the verdict on the console; exit code (0 passed,
 // 4 course failed, 3 diverged).
 int finishDemo(DriveSession& session, const DemoOptions& o);
+
+// The course's verdict as one line ("ISO 3888-1 at 60 km/h: PASSED, 0 cones
+// hit, peak a_y ..."), "" without a course: the demo's closing card and its
+// last line on stdout.
+std::string courseVerdictLine(const DriveSession& session);
 // Parses "1280x720".
 bool parseSize(const std::string& text, int& width, int& height);
 

@@ -9,6 +9,7 @@
 #include "render/headless.h"
 #include "render/png_queue.h"
 #include "render/video_pipe.h"
+#include "demo_common.h"
 #include "interrupt.h"
 #include "view/scene_setup.h"
 
@@ -56,7 +57,11 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
       const auto t0 = Clock::now();
       const vehicle::VehicleView view = session.view();
       const double wall = seconds(t0 - wall0);
-      vehicle::HudInfo hud = session.hud(wall > 0 ? (session.time() - sim0) / wall : 0.0, lastStep, "");
+      // Once the course is decided its verdict is the closing card (the message line).
+      const auto course = session.courseResult();
+      const bool decided = course && (course->exitTime >= 0 || !course->passed);
+      vehicle::HudInfo hud = session.hud(wall > 0 ? (session.time() - sim0) / wall : 0.0, lastStep,
+                                         decided ? courseVerdictLine(session) : "");
       hud.realTimeLabel = "render";  // simulated time per wall second, drawing and encoding included
       scene.update(view, hud);
       const render::Frame& f = renderer.render();

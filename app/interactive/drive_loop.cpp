@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <mutex>
 
+#include "demo_common.h"
 #include "interactive/draw_thread.h"
 #include "interactive/tick_clock.h"
 #include "interactive/tick_handler.h"
@@ -34,6 +35,7 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
 
   TickClock clock(session.spec().tick);
   RealTimeMeter realTime;
+  double closingSince = -1;  // s since the start when the scenario ended (quitAtEnd)
   while (true) {
     const double period = clock.waitForTick();
     const double sim0 = session.time();
@@ -42,12 +44,17 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
     if (out.quit || interruptRequested()) break;
     if (opt.seconds > 0 && clock.sinceStart() >= opt.seconds) break;
     const double physics = std::chrono::duration<double>(TickClock::Clock::now() - clock.tickStart()).count();
-    if (opt.quitAtEnd && session.finished()) break;
+    // At the end, the verdict's card stays up a moment before the window closes.
+    if (opt.quitAtEnd && session.finished()) {
+      if (closingSince < 0) closingSince = clock.sinceStart();
+      if (clock.sinceStart() - closingSince >= opt.closingCardSeconds) break;
+    }
     handler.setSteeringFeel();
     // Time advanced by a rewind or reset is not real-time progress.
     const double advanced = session.time() - sim0;
     realTime.add(period, advanced > 0 ? advanced : 0.0);
-    drawing.publish(session.view(), session.hud(realTime.factor(), physics, handler.message()));
+    const std::string card = opt.quitAtEnd && session.finished() ? courseVerdictLine(session) : "";
+    drawing.publish(session.view(), session.hud(realTime.factor(), physics, card.empty() ? handler.message() : card));
     const bool overrun = clock.endTick();
     std::lock_guard<std::mutex> lock(statsMutex);
     stats.tick(period, physics, overrun);

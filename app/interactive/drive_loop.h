@@ -24,6 +24,9 @@ struct InteractiveOptions {
   bool vsync = true;
   std::string screenshot;              // PNG of the last frame, if set
   bool quitAtEnd = false;              // close when the scenario's duration is reached
+  // With quitAtEnd: the closing card (the course's verdict, demo_common.h)
+  // held on screen this long before the window closes.
+  double closingCardSeconds = 3.0;
 };
 
 // Runs until the person quits, the time limit, or (quitAtEnd) the scenario
