@@ -52,7 +52,7 @@ osg::ref_ptr<osg::Geode> makeConeGeode() {
 }  // namespace
 
 // The same cone geometry instanced at every course position.
-osg::ref_ptr<osg::Node> makeConesNode(const std::vector<Eigen::Vector3d>& cones, const SurfaceSampler& ground) {
+osg::ref_ptr<osg::Group> makeConesNode(const std::vector<Eigen::Vector3d>& cones, const SurfaceSampler& ground) {
   osg::ref_ptr<osg::Group> group = new osg::Group;
   if (cones.empty()) return group;
   osg::ref_ptr<osg::Geode> cone = makeConeGeode();
@@ -63,6 +63,16 @@ osg::ref_ptr<osg::Node> makeConesNode(const std::vector<Eigen::Vector3d>& cones,
     group->addChild(t);
   }
   return group;
+}
+
+void knockCone(osg::Group& cones, int index, double heading) {
+  if (index < 0 || index >= static_cast<int>(cones.getNumChildren())) return;
+  auto* t = static_cast<osg::PositionAttitudeTransform*>(cones.getChild(index));
+  // Tipped about its base's edge by 80 deg (it rests on its base rim and
+  // tip), about the horizontal axis across the direction it was pushed.
+  const osg::Vec3d push(std::cos(heading), std::sin(heading), 0.0), axis = osg::Vec3d(0, 0, 1) ^ push;
+  t->setAttitude(osg::Quat(osg::DegreesToRadians(80.0), axis));
+  t->setPivotPoint(osg::Vec3d(0, 0, 0));
 }
 
 }  // namespace bdfcar::render

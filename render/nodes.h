@@ -32,7 +32,10 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh);
 osg::ref_ptr<osg::Node> makeRoadNode(const terrain::RoadMarkings& road, const SurfaceSampler& ground);
 
 // Traffic cones standing on the terrain at the given ground points.
-osg::ref_ptr<osg::Node> makeConesNode(const std::vector<Eigen::Vector3d>& cones, const SurfaceSampler& ground);
+// One transform per cone (course order) under `group`, for knockCone.
+osg::ref_ptr<osg::Group> makeConesNode(const std::vector<Eigen::Vector3d>& cones, const SurfaceSampler& ground);
+// Cone `index` of a cones node lying on its side, knocked over toward the heading (rad).
+void knockCone(osg::Group& cones, int index, double heading);
 
 // Soft dark ellipse to lay under the car (length x width, m), in the xy plane.
 osg::ref_ptr<osg::Node> makeShadowNode(double length, double width);

@@ -2,6 +2,7 @@
 
 #include <osg/Fog>
 #include <osg/Material>
+#include <osg/PositionAttitudeTransform>
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +36,10 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   root->addChild(world);
   world->addChild(makeGroundNode(surface));
   world->addChild(makeRoadNode(cfg.terrain.road, *ground));
-  if (cfg.course) world->addChild(makeConesNode(cfg.course->cones(), *ground));
+  if (cfg.course) {
+    cones = makeConesNode(cfg.course->cones(), *ground);
+    world->addChild(cones);
+  }
 
   const vehicle::VehicleGeometry& g = cfg.geometry;
   shadow->addChild(makeShadowNode(g.length * 1.05, g.width * 1.15));
@@ -74,6 +78,12 @@ void Scene::Impl::update(const vehicle::VehicleView& view, const vehicle::HudInf
   const Eigen::Vector3d centre = view.chassis.rotation * config.geometry.bodyOffset + p;
   shadow->setMatrix(osg::Matrixd::rotate(headingOf(view.chassis), osg::Vec3d(0, 0, 1)) *
                     osg::Matrixd::translate(centre.x(), centre.y(), ground->heightOr(centre.x(), centre.y(), 0.0) + 0.02));
+  // Cones hit stay down; a reset or rewind that un-hits them stands them up again.
+  if (cones) {
+    for (unsigned i = 0; i < cones->getNumChildren(); ++i)
+      static_cast<osg::PositionAttitudeTransform*>(cones->getChild(i))->setAttitude(osg::Quat());
+    for (const auto& [index, heading] : info.knockedCones) knockCone(*cones, index, heading);
+  }
   lastHud = info;
   // A brake lamp switch: any brake pedal travel (the handbrake lights nothing).
   setBrakeLights(body, info.brake > 0.02);

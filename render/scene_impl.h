@@ -36,6 +36,7 @@ struct Scene::Impl {
   osg::ref_ptr<osg::MatrixTransform> sky, chassis, shadow;
   std::array<osg::ref_ptr<osg::MatrixTransform>, 4> wheels;
   BodyNode body;
+  osg::ref_ptr<osg::Group> cones;          // the course's, knocked over as the HUD reports them
   LinkPool links;
   HudNode hud;
 

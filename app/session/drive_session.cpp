@@ -104,6 +104,7 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   }
   if (const auto c = run_->course()) {
     h.coneHits = c->coneHits;
+    h.knockedCones = c->knockedCones;
     h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;
     // A corner of the car outside the lanes fails the run at once; through
     // the exit gate with none, it passes.

@@ -33,6 +33,7 @@ void CourseJudge::update(const vehicle::VehicleSample& s) {
         std::abs(d.dot(left)) <= halfWidth_ + kConeBaseRadius) {
       hit_[i] = true;
       ++r_.coneHits;
+      r_.knockedCones.emplace_back(static_cast<int>(i), std::atan2(heading.y(), heading.x()));
     }
   }
 }

@@ -4,6 +4,7 @@
 // lateral acceleration and the times the car entered and left the course.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "scenario/iso3888_course.h"
@@ -17,6 +18,9 @@ struct CourseResult {
   double peakLateralAcceleration = 0;  // |a_y|, m/s^2, inside the course
   double entryTime = -1, exitTime = -1;  // s; -1 = not yet
   double firstFailureX = 0;            // where a corner first left the course, m
+  // The cones hit, in the order of Iso3888Course::cones(), each with the
+  // car's heading when it was hit (rad: the way it is knocked over).
+  std::vector<std::pair<int, double>> knockedCones;
 };
 
 class CourseJudge {

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,7 @@ struct HudInfo {
   bool shifting = false;
   double handbrake = 0.0;           // 0..1
   int coneHits = -1;                // -1 = not on a cone course
+  std::vector<std::pair<int, double>> knockedCones;  // index in the course's cones, heading of the car that hit it (rad)
   double courseTime = -1.0;         // s, -1 = not timing
   // The course's verdict the moment it is decided: "" while open, else
   // "PASSED" or "FAILED: why".
