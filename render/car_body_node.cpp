@@ -3,6 +3,7 @@
 #include <osg/CullFace>
 #include <osg/Depth>
 #include <osg/Geode>
+#include <osg/LineWidth>
 #include <osg/Material>
 
 #include <cstdio>
@@ -111,6 +112,44 @@ osg::ref_ptr<osg::StateSet> translucentState(const osg::StateSet& solid) {
   return ss;
 }
 
+// The chassis as a frame of lines, for the suspension views: the body's box
+// (its 12 edges) with a ladder along its floor, so that roll and pitch read
+// even with the body hidden. Unlit, in the chassis frame.
+osg::ref_ptr<osg::Node> makeChassisFrame(const vehicle::VehicleGeometry& g) {
+  const osg::Vec3 c = toOsgF(g.bodyOffset);
+  const float l = float(g.length) / 2, w = float(g.width) / 2, lo = -float(g.height) / 2, hi = 0.1f * float(g.height);
+  osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+  auto line = [&](const osg::Vec3& a, const osg::Vec3& b) {
+    v->push_back(c + a);
+    v->push_back(c + b);
+  };
+  for (float z : {lo, hi}) {
+    line({-l, -w, z}, {l, -w, z});
+    line({-l, w, z}, {l, w, z});
+    line({-l, -w, z}, {-l, w, z});
+    line({l, -w, z}, {l, w, z});
+  }
+  for (float x : {-l, l})
+    for (float y : {-w, w}) line({x, y, lo}, {x, y, hi});
+  // The ladder: two rails inside the sills and cross members.
+  const float rail = 0.6f * w;
+  line({-l, -rail, lo}, {l, -rail, lo});
+  line({-l, rail, lo}, {l, rail, lo});
+  for (float x : {-0.5f * l, 0.0f, 0.5f * l}) line({x, -w, lo}, {x, w, lo});
+  osg::ref_ptr<osg::Geometry> geom = new osg::Geometry;
+  geom->setVertexArray(v.get());
+  osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array;
+  colour->push_back(rgba(0.8, 0.6, 1.0));  // violet: no other part of the scene has it
+  geom->setColorArray(colour.get(), osg::Array::BIND_OVERALL);
+  geom->addPrimitiveSet(new osg::DrawArrays(GL_LINES, 0, static_cast<GLsizei>(v->size())));
+  osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+  geode->addDrawable(geom.get());
+  osg::StateSet* ss = geode->getOrCreateStateSet();
+  ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+  ss->setAttributeAndModes(new osg::LineWidth(2.0f));
+  return geode;
+}
+
 }  // namespace
 
 // Tries the path as given, then under assetRoot, then under the source tree.
@@ -154,6 +193,8 @@ BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::strin
   }
   if (!body.warning.empty()) std::fprintf(stderr, "bdfcar render: %s\n", body.warning.c_str());
   body.node->addChild(geode);
+  body.frame = makeChassisFrame(geometry);
+  body.frame->setNodeMask(0u);  // solid body first
   body.solid = solidState();
   body.translucent = translucentState(*body.solid);
   body.node->setStateSet(body.solid.get());
@@ -168,9 +209,10 @@ void setBrakeLights(BodyNode& body, bool on) {
   colours->dirty();
 }
 
-// Swaps the body's state set and visibility.
+// Swaps the body's state set and visibility; the chassis frame shows when the body does not (fully).
 void applyBodyDisplay(BodyNode& body, BodyDisplay display) {
   body.node->setNodeMask(display == BodyDisplay::Hidden ? 0u : ~0u);
+  if (body.frame) body.frame->setNodeMask(display == BodyDisplay::Solid ? 0u : ~0u);
   body.node->setStateSet(display == BodyDisplay::Translucent ? body.translucent.get() : body.solid.get());
 }
 

@@ -20,6 +20,7 @@ struct BodyNode {
   std::string source;                                // file the mesh came from, or "box"
   std::string warning;                               // why the box fallback is drawn, if it is
   osg::ref_ptr<osg::Geometry> tailLights;            // the mesh's "taillight" parts (none on the box)
+  osg::ref_ptr<osg::Node> frame;                     // the chassis as lines (suspension views), a sibling of node
   bool brakeLightsOn = false;
 };
 

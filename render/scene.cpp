@@ -47,6 +47,7 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   body = makeBodyNode(g, cfg.assetRoot);
   if (!body.warning.empty()) warnings.push_back(body.warning);
   chassis->addChild(body.node);
+  chassis->addChild(body.frame);  // beside the body: it shows while the body is hidden
   world->addChild(chassis);
   osg::ref_ptr<osg::Node> wheel = makeWheelNode(g.wheelRadius, g.wheelWidth);
   for (auto& w : wheels) {

@@ -176,6 +176,26 @@ TEST(Render, HiddenBodyShowsTheSuspensionStruts) {
   EXPECT_GT(translucent, solid + 15);
 }
 
+// With the body hidden or see-through, the chassis is drawn as a frame of
+// violet lines (unlit: 204, 153, 255) so that its roll and pitch still read;
+// with the solid body, none of it shows.
+TEST(Render, SuspensionViewsDrawTheChassisFrame) {
+  auto violet = [](const std::uint8_t* p) {
+    return std::abs(p[0] - 204) < 12 && std::abs(p[1] - 153) < 12 && std::abs(p[2] - 255) < 12;
+  };
+  Scene scene(testScene(false));
+  scene.setCamera(CameraMode::Orbit);
+  Renderer r(scene, 480, 270);
+  const int solid = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
+  scene.setBodyDisplay(BodyDisplay::Hidden);
+  const int hidden = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
+  scene.setBodyDisplay(BodyDisplay::Translucent);
+  const int translucent = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
+  EXPECT_EQ(solid, 0);
+  EXPECT_GT(hidden, 200);
+  EXPECT_GT(translucent, 100);
+}
+
 TEST(Render, FullHdFrameAt1280x720) {
   Scene scene(testScene());
   Renderer r(scene, 1280, 720);
