@@ -4,6 +4,8 @@
 // "offscreen" video driver. DISPLAY is unset: no display server is used.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -160,18 +162,26 @@ TEST(Render, EveryCameraModeRendersItsOwnView) {
   EXPECT_EQ(scene.nextCamera(), CameraMode::Chase);
 }
 
+// Pixels of a 480 x 270 frame that `match`, with the body solid, hidden and translucent.
+template <typename Match>
+std::array<int, 3> pixelsPerBodyDisplay(Scene& scene, Match match) {
+  Renderer r(scene, 480, 270);
+  std::array<int, 3> n{};
+  int i = 0;
+  for (BodyDisplay d : {BodyDisplay::Solid, BodyDisplay::Hidden, BodyDisplay::Translucent}) {
+    scene.setBodyDisplay(d);
+    n[i++] = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, match);
+  }
+  return n;
+}
+
 TEST(Render, HiddenBodyShowsTheSuspensionStruts) {
   // Strut yellow (also seen through the 30 % body) appears only once the body stops hiding the links.
   auto strut = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 110 && p[2] < 90; };
   Scene scene(testScene(false));
   scene.setCamera(CameraMode::Orbit);
   scene.orbitBy(0.0, 0.0, 0.6);
-  Renderer r(scene, 480, 270);
-  const int solid = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
-  scene.setBodyDisplay(BodyDisplay::Hidden);
-  const int hidden = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
-  scene.setBodyDisplay(BodyDisplay::Translucent);
-  const int translucent = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, strut);
+  const auto [solid, hidden, translucent] = pixelsPerBodyDisplay(scene, strut);
   EXPECT_GT(hidden, solid + 30);
   EXPECT_GT(translucent, solid + 15);
 }
@@ -185,12 +195,7 @@ TEST(Render, SuspensionViewsDrawTheChassisFrame) {
   };
   Scene scene(testScene(false));
   scene.setCamera(CameraMode::Orbit);
-  Renderer r(scene, 480, 270);
-  const int solid = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
-  scene.setBodyDisplay(BodyDisplay::Hidden);
-  const int hidden = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
-  scene.setBodyDisplay(BodyDisplay::Translucent);
-  const int translucent = countPixels(frameAt(scene, r, 1.0), 0, 1, 0, 1, violet);
+  const auto [solid, hidden, translucent] = pixelsPerBodyDisplay(scene, violet);
   EXPECT_EQ(solid, 0);
   EXPECT_GT(hidden, 200);
   EXPECT_GT(translucent, 100);
