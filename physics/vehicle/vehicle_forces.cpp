@@ -165,20 +165,25 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   const double h = std::max(0.0, t - lastAccepted_);
   if (vehicle_.planar) planarLoads(d);
   if (!vehicle_.spec.antiRollBars.empty()) antiRollBars(d);
+  // Each wheel's kinematics and spin relative to its carrier, once per
+  // evaluation (the brakes and the driveline both need the spin).
+  std::array<tyre::WheelKinematics, 4> ks;
+  std::array<double, 4> spins;
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];
-    const tyre::WheelKinematics k = wheelKinematics(d, w);
+    const tyre::WheelKinematics& k = ks[w] = wheelKinematics(d, w);
+    spins[w] = relativeSpin(d, w);
     c.spinRate = k.spinRate;
     c.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));
     if (c.out.inContact) mb::addWorldWrench(d, wl.spindle, c.out.point, c.out.force, c.out.moment);
     // Brakes react on the carrier (caliper on the upright): a joint torque.
-    d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, relativeSpin(d, w), h);
+    d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, spins[w], h);
     if (!vehicle_.spec.powertrain) applyDriveTorque(d, w, k);
   }
   if (vehicle_.spec.powertrain) {
-    powertrain(d, h);
-    for (int w : driven_) applyDriveTorque(d, w, wheelKinematics(d, w));
+    powertrain(d, h, spins);
+    for (int w : driven_) applyDriveTorque(d, w, ks[w]);
   }
   aerodynamics(d);
 }
@@ -205,17 +210,17 @@ double VehicleForces::engineSpeed(const mb::Data& d) const {
   return (d.vel[e].tail<3>() - d.Xup[e].E * d.vel[parent].tail<3>()).x();
 }
 
-double VehicleForces::drivenSpeed(const mb::Data& d) const {
+double VehicleForces::drivenSpeed(const std::array<double, 4>& spins) const {
   double sum = 0;
-  for (int w : driven_) sum += relativeSpin(d, w);  // about the spindle's y: + rolls forwards on either side
+  for (int w : driven_) sum += spins[w];  // about the spindle's y: + rolls forwards on either side
   return driven_.empty() ? 0.0 : sum / static_cast<double>(driven_.size());
 }
 
-void VehicleForces::powertrain(mb::Data& d, double h) {
+void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4>& spins) {
   const PowertrainSpec& P = *vehicle_.spec.powertrain;
   DrivelineState& s = driveline_;
   s.engineSpeed = engineSpeed(d);
-  s.outputSpeed = drivenSpeed(d);
+  s.outputSpeed = drivenSpeed(spins);
   s.engineTorque = engineTorque(P.engine, s.engineSpeed, s.command.throttle);
   // In neutral the clutch turns the gearbox's input shaft alone (its inertia is the engine's).
   s.clutchTorque = s.command.ratio == 0.0
@@ -228,7 +233,7 @@ void VehicleForces::powertrain(mb::Data& d, double h) {
   // coupling's torque from the faster wheels to the slower.
   const double share = s.command.ratio * s.clutchTorque / static_cast<double>(driven_.size());
   for (int w : driven_) {
-    wheels_[w].driveTorque = share - P.viscousCoupling * (relativeSpin(d, w) - s.outputSpeed);
+    wheels_[w].driveTorque = share - P.viscousCoupling * (spins[w] - s.outputSpeed);
   }
 }
 
@@ -274,9 +279,11 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
   }
   if (vehicle_.spec.powertrain) {
     DrivelineState& s = driveline_;
+    std::array<double, 4> spins;
+    for (int w = 0; w < 4; ++w) spins[w] = relativeSpin(d, w);
     s.clutchDeflection = s.command.ratio == 0.0 ? 0.0
                                                 : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
-                                                                          s.clutchDeflection, engineSpeed(d) - s.command.ratio * drivenSpeed(d), h);
+                                                                          s.clutchDeflection, engineSpeed(d) - s.command.ratio * drivenSpeed(spins), h);
   }
   lastAccepted_ = t;
   planesReady_ = true;

@@ -113,9 +113,10 @@ class VehicleForces final : public mb::ForceProvider {
   void antiRollBars(mb::Data& data);
   // The powertrain (powertrain.h): engine and clutch torques on the crank,
   // the drive torques of the driven wheels into wheels_[w].driveTorque.
-  void powertrain(mb::Data& data, double h);
+  void powertrain(mb::Data& data, double h, const std::array<double, 4>& spins);
   double engineSpeed(const mb::Data& data) const;
-  double drivenSpeed(const mb::Data& data) const;  // mean relative spin of the driven wheels, + forward
+  // Mean of the driven wheels' spins relative to their carriers (spins: all four), + forward.
+  double drivenSpeed(const std::array<double, 4>& spins) const;
   void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
   void aerodynamics(mb::Data& data) const;
   std::optional<double> modelLoad(int w) const {
