@@ -34,14 +34,32 @@ const char* cutTypeName(mb::CutJointType t) {
   return "?";
 }
 
-// The terrain's kind and size.
+// One terrain's kind, friction, size and track, indented.
+void printTerrain(const terrain::TerrainData& t, const char* indent) {
+  static const char* kKind[] = {"plane", "mesh", "heightfield", "ground"};
+  std::printf("%skind: %s, friction %.3f\n", indent, kKind[static_cast<int>(t.kind)], t.friction);
+  if (t.kind == terrain::TerrainKind::Mesh)
+    std::printf("%s%zu vertices, %zu triangles\n", indent, t.vertices.size(), t.triangles.size());
+  if (t.kind == terrain::TerrainKind::Heightfield)
+    std::printf("%s%d x %d heights, %g x %g m cells\n", indent, t.rows, t.cols, t.dx, t.dy);
+  if (!t.centreLine.empty()) {
+    double length = 0;
+    for (std::size_t i = 1; i < t.centreLine.size(); ++i) length += (t.centreLine[i] - t.centreLine[i - 1]).norm();
+    if (t.centreLineClosed) length += (t.centreLine.front() - t.centreLine.back()).norm();
+    std::printf("%strack: %s, centre line %.1f m\n", indent, t.centreLineClosed ? "circuit" : "open", length);
+  }
+}
+
+// The terrain's kind and size, and those of a ground's pieces.
 int runTerrainInfo(const std::string& path) {
   const terrain::TerrainData t = terrain::loadTerrain(path);
-  static const char* kKind[] = {"plane", "mesh", "heightfield"};
   std::printf("%s (%s)\n", t.name.c_str(), path.c_str());
-  std::printf("  kind: %s, friction %.3f\n", kKind[static_cast<int>(t.kind)], t.friction);
-  if (t.kind == terrain::TerrainKind::Mesh) std::printf("  %zu vertices, %zu triangles\n", t.vertices.size(), t.triangles.size());
-  if (t.kind == terrain::TerrainKind::Heightfield) std::printf("  %d x %d heights, %g x %g m cells\n", t.rows, t.cols, t.dx, t.dy);
+  printTerrain(t, "  ");
+  for (const terrain::GroundPiece& p : t.pieces) {
+    std::printf("  piece '%s' at (%.1f, %.1f, %.1f) m, heading %.1f deg (%s)\n", p.name.c_str(), p.at.x(), p.at.y(),
+                p.at.z(), p.heading * 180.0 / 3.14159265358979323846, p.terrain.sourceFile.c_str());
+    printTerrain(p.terrain, "    ");
+  }
   return 0;
 }
 

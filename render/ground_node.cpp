@@ -1,4 +1,5 @@
 #include <osg/Geode>
+#include <osg/PolygonOffset>
 
 #include <array>
 #include <vector>
@@ -29,7 +30,7 @@ Corner midpoint(const Corner& a, const Corner& b) {
 }
 
 // Appends the triangle, halving its longest edge until every edge is at most kMaxEdge.
-void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const Corner& c) {
+void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const Corner& c, const osg::Vec4& colour) {
   std::vector<std::array<Corner, 3>> stack{{a, b, c}};
   while (!stack.empty()) {
     const std::array<Corner, 3> t = stack.back();
@@ -45,7 +46,7 @@ void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const 
     }
     if (len <= kMaxEdge) {
       for (const Corner& q : t)
-        tb.vertex(q.p, q.n, osg::Vec4(1, 1, 1, 1), osg::Vec2(q.p.x() / kTexelRepeat, q.p.y() / kTexelRepeat));
+        tb.vertex(q.p, q.n, colour, osg::Vec2(q.p.x() / kTexelRepeat, q.p.y() / kTexelRepeat));
       continue;
     }
     // Split edge (longest, longest+1) at its midpoint m; both halves keep the winding.
@@ -58,23 +59,66 @@ void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const 
   }
 }
 
+// How each material is drawn: its texture (none: plain colour), the colour
+// the texture is modulated by, and its layer. Surfaces laid on the grass
+// (pads, tracks) share its plane: a polygon offset and an earlier render bin
+// put them on top, paint and curbs on top of those.
+enum class Layer { Ground, Surface, Paint };
+struct Look {
+  int texture;  // 0 none, 1 grass, 2 asphalt
+  osg::Vec4 colour;
+  Layer layer;
+};
+
+Look lookOf(terrain::Material m) {
+  using terrain::Material;
+  switch (m) {
+    case Material::Grass: return {1, rgba(1, 1, 1), Layer::Ground};
+    case Material::Asphalt: return {2, rgba(1, 1, 1), Layer::Surface};
+    case Material::Concrete: return {0, rgba(0.66, 0.65, 0.62), Layer::Surface};
+    case Material::Gravel: return {0, rgba(0.6, 0.52, 0.4), Layer::Surface};
+    case Material::Paint: return {0, rgba(0.93, 0.93, 0.9), Layer::Paint};
+    case Material::CurbRed: return {0, rgba(0.78, 0.1, 0.08), Layer::Paint};
+    case Material::CurbWhite: return {0, rgba(0.93, 0.93, 0.9), Layer::Paint};
+  }
+  return {1, rgba(1, 1, 1), Layer::Ground};
+}
+
 }  // namespace
 
-// The terrain mesh, subdivided for per-vertex fog, textured in world xy so the
-// grass scrolls past the car at the true ground speed.
+// The terrain mesh, subdivided for per-vertex fog, each material in its own
+// geometry; textured in world xy so the surface scrolls past the car at the
+// true ground speed.
 osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
-  TriangleBuilder tb;
-  tb.enableTexcoords();
+  constexpr int kTextures = 3;
+  std::array<std::array<TriangleBuilder, 3>, kTextures> builders;  // [texture][layer]
+  for (int texture = 1; texture < kTextures; ++texture)
+    for (TriangleBuilder& tb : builders[texture]) tb.enableTexcoords();
   auto corner = [&](int i) {
     return Corner{toOsgF(mesh.vertices[i]),
                   i < static_cast<int>(mesh.normals.size()) ? toOsgF(mesh.normals[i]) : osg::Vec3(0, 0, 1)};
   };
-  for (const auto& t : mesh.triangles) addSubdivided(tb, corner(t[0]), corner(t[1]), corner(t[2]));
-  osg::ref_ptr<osg::Geometry> g = tb.build();
-  g->getOrCreateStateSet()->setTextureAttributeAndModes(0, grassTexture().get(), osg::StateAttribute::ON);
-  g->getOrCreateStateSet()->setRenderBinDetails(kBinGround, "RenderBin");
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const auto& t = mesh.triangles[k];
+    const Look look = lookOf(k < mesh.materials.size() ? mesh.materials[k] : terrain::Material::Grass);
+    addSubdivided(builders[look.texture][static_cast<int>(look.layer)], corner(t[0]), corner(t[1]), corner(t[2]),
+                  look.colour);
+  }
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-  geode->addDrawable(g.get());
+  const int bins[3] = {kBinGround, kBinAsphalt, kBinRoadPaint};
+  const float offsets[3] = {0.0f, -2.0f, -4.0f};
+  for (int texture = 0; texture < kTextures; ++texture)
+    for (int layer = 0; layer < 3; ++layer) {
+      TriangleBuilder& tb = builders[texture][layer];
+      if (tb.v->empty()) continue;
+      osg::ref_ptr<osg::Geometry> g = tb.build();
+      osg::StateSet* ss = g->getOrCreateStateSet();
+      if (texture != 0)
+        ss->setTextureAttributeAndModes(0, (texture == 1 ? grassTexture() : asphaltTexture()).get(), osg::StateAttribute::ON);
+      if (layer != 0) ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
+      ss->setRenderBinDetails(bins[layer], "RenderBin");
+      geode->addDrawable(g.get());
+    }
   return geode;
 }
 

@@ -36,6 +36,15 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   root->addChild(world);
   world->addChild(makeGroundNode(surface));
   world->addChild(makeRoadNode(cfg.terrain.road, *ground));
+  // A ground's pieces paint their roads in their own frames.
+  for (const terrain::GroundPiece& piece : cfg.terrain.pieces) {
+    if (!piece.terrain.road.present) continue;
+    const terrain::TriangleMesh local = terrainSurface(piece.terrain);
+    osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(
+        osg::Matrixd::rotate(piece.heading, osg::Vec3d(0, 0, 1)) * osg::Matrixd::translate(toOsg(piece.at)));
+    placed->addChild(makeRoadNode(piece.terrain.road, SurfaceSampler(local)));
+    world->addChild(placed);
+  }
   if (cfg.course) {
     cones = makeConesNode(cfg.course->cones(), *ground);
     world->addChild(cones);

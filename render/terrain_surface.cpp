@@ -27,6 +27,7 @@ terrain::TriangleMesh terrainSurface(const terrain::TerrainData& data, double pl
     m.normals.push_back(n);
   }
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.materials.assign(2, data.material);
   return m;
 }
 #endif

@@ -15,3 +15,7 @@ endif()
 add_executable(bench_terrain bench/bench_terrain.cpp)
 target_link_libraries(bench_terrain PRIVATE bdfcar_terrain_bullet bdfcar_terrain benchmark::benchmark bdfcar_warnings)
 target_compile_definitions(bench_terrain PRIVATE BDFCAR_ASSETS_DIR="${PROJECT_SOURCE_DIR}/assets")
+
+bdfcar_test(test_proving_ground test_proving_ground.cpp)
+target_link_libraries(test_proving_ground PRIVATE bdfcar_terrain_bullet bdfcar_terrain)
+target_compile_definitions(test_proving_ground PRIVATE BDFCAR_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

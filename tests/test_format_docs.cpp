@@ -59,7 +59,7 @@ TEST(FormatDocs, EveryKeyTheLoadersReadIsDocumented) {
     vehicle::loadVehicleFile(f.string());
     docOf[f.string()] = "docs/VEHICLES.md";
   }
-  for (const fs::path& f : tomlFiles(kSource / "assets/terrain", false)) {
+  for (const fs::path& f : tomlFiles(kSource / "assets/terrain", true)) {
     terrain::loadTerrain(f.string());
     docOf[f.string()] = "docs/TERRAIN.md";
   }

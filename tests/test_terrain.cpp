@@ -558,7 +558,7 @@ TEST(TerrainFile, UnknownKeysAreErrors) {
   EXPECT_TRUE(contains(other, "unknown key 'mesh'")) << other;
   const std::string kind = loadError("kind.toml", "kind = \"lava\"\nfriction = 0.9\n");
   EXPECT_TRUE(contains(kind, "kind.toml:1:")) << kind;
-  EXPECT_TRUE(contains(kind, "key 'kind': expected one of \"plane\", \"mesh\", \"heightfield\", \"road\", got \"lava\"")) << kind;
+  EXPECT_TRUE(contains(kind, "key 'kind': expected one of \"plane\", \"mesh\", \"heightfield\", \"road\", \"track\", \"ground\", got \"lava\"")) << kind;
 }
 
 TEST(TerrainFile, MissingOrBrokenObjNamesBothFiles) {

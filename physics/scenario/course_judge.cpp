@@ -1,8 +1,13 @@
 #include "scenario/course_judge.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bdfcar::scenario {
+
+namespace {
+constexpr double kApproachMargin = 10.0;  // m beside the lanes within which a car is at the course
+}  // namespace
 
 CourseJudge::CourseJudge(const Iso3888Course& course, double length, double width, const Eigen::Vector3d& centre)
     : course_(course), halfLength_(0.5 * length), halfWidth_(0.5 * width), centre_(centre), cones_(course.cones()),
@@ -13,7 +18,15 @@ void CourseJudge::update(const vehicle::VehicleSample& s) {
   const Eigen::Vector2d heading(std::cos(s.yaw), std::sin(s.yaw)), left(-heading.y(), heading.x());
   const Eigen::Vector3d c3 = s.chassisOrigin + s.chassisRotation * centre_;
   const Eigen::Vector2d c(c3.x(), c3.y());
-  const bool inside = c.x() + halfLength_ >= course_.startX && c.x() - halfLength_ <= course_.endX;
+  // In the course: over its length and near its lanes (a car driving past
+  // it elsewhere on a proving ground has not entered it).
+  double yMin = course_.lanes[0].centreY, yMax = yMin;
+  for (const CourseLane& l : course_.lanes) {
+    yMin = std::min(yMin, l.centreY - 0.5 * l.width);
+    yMax = std::max(yMax, l.centreY + 0.5 * l.width);
+  }
+  const bool inside = c.x() + halfLength_ >= course_.startX && c.x() - halfLength_ <= course_.endX &&
+                      c.y() >= yMin - kApproachMargin && c.y() <= yMax + kApproachMargin;
   if (inside && r_.entryTime < 0) r_.entryTime = s.t;
   if (!inside && r_.entryTime >= 0 && r_.exitTime < 0 && c.x() > course_.endX) r_.exitTime = s.t;
   if (!inside) return;

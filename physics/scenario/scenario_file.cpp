@@ -6,6 +6,7 @@
 
 #include "config/toml_reader.h"
 #include "scenario/scenario_spec.h"
+#include "terrain/terrain_file.h"
 #include "vehicle/motion_ratio.h"
 
 namespace bdfcar::scenario {
@@ -283,6 +284,29 @@ int stepsPerTick(double tick, double step) {
   return n >= 1 && n <= 1e6 && std::abs(n * step - tick) <= 1e-9 * tick ? static_cast<int>(n) : 0;
 }
 
+// `type = "track"`: the centre line of the scenario terrain's track piece named `track`.
+void readTrackPath(Table& d, const std::string& terrainFile, PathFollowerSpec& f) {
+  const std::string name = d.string("track");
+  if (terrainFile.empty()) d.fail("follows track '" + name + "', but the scenario names no terrain", "track");
+  terrain::TerrainData data;
+  try {
+    data = terrain::loadTerrain(terrainFile);
+  } catch (const terrain::TerrainFileError& e) {
+    throw config::ConfigError(e.what());
+  }
+  terrain::WorldCentreLine line;
+  if (!terrain::findCentreLine(data, name, line)) {
+    std::string known;
+    for (const terrain::GroundPiece& p : data.pieces)
+      if (!p.terrain.centreLine.empty()) known += (known.empty() ? "" : ", ") + ("'" + p.name + "'");
+    if (!data.centreLine.empty()) known = "'" + data.name + "'";
+    d.fail("names no track of terrain '" + terrainFile + "'; its tracks: " + (known.empty() ? "none" : known), "track");
+  }
+  f.path = PathFollowerSpec::Path::Polyline;
+  f.points = std::move(line.points);
+  f.closed = line.closed;
+}
+
 ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config::Setting>& settings) {
   std::vector<config::Setting> own;
   ScenarioSpec s;
@@ -370,10 +394,11 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     s.course.iso3888 = true;
     s.course.part = type == "iso3888_2" ? 2 : 1;
     s.course.startX = c->number("start_x", Dimension::Length, kPosition, s.course.startX);
+    s.course.centreY = c->number("centre_y", Dimension::Length, kPosition, s.course.centreY);
     c->finish();
   }
   if (auto d = root.optionalTable("driver")) {
-    const std::string type = d->choice("type", {"path_follower", "path", "circle"});
+    const std::string type = d->choice("type", {"path_follower", "path", "circle", "track"});
     PathFollowerSpec& f = s.pathFollower;
     f.enabled = true;
     f.lookAheadTime = d->number("look_ahead_time", Dimension::Time, kLookAheadTime, f.lookAheadTime);
@@ -392,6 +417,8 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
       }
       if (f.points.size() < 2) d->fail("the path '" + path + "' needs at least two distinct points", "file");
       f.closed = d->boolean("closed", false);
+    } else if (type == "track") {
+      readTrackPath(*d, s.terrainFile, f);
     } else if (type == "circle") {
       f.path = PathFollowerSpec::Path::Circle;
       f.radius = d->number("radius", Dimension::Length, Range{1.0, 1e4});
@@ -399,7 +426,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     }
     d->finish();
     if (type == "path_follower" && !s.course.iso3888)
-      root.fail("a path_follower driver needs a [course] to follow (or type = \"path\" or \"circle\")", "driver");
+      root.fail("a path_follower driver needs a [course] to follow (or type = \"path\", \"track\" or \"circle\")", "driver");
     if (s.steering.kind != SignalSpec::Kind::None) root.fail("give either [steering] or a path_follower [driver], not both", "driver");
   }
   if (auto c = root.optionalTable("check")) s.check = readCheck(*c);

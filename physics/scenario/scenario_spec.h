@@ -52,6 +52,7 @@ struct CourseSpec {
   bool iso3888 = false;
   int part = 1;                // ISO 3888-1 (double lane change) or -2 (obstacle avoidance)
   double startX = 50;          // m, where the course begins
+  double centreY = std::numeric_limits<double>::quiet_NaN();  // m, its entry lane's centre; NaN: the start's y
 };
 
 struct PathFollowerSpec {
@@ -59,7 +60,8 @@ struct PathFollowerSpec {
   double lookAheadTime = 0.9;  // s
   double minLookAhead = 5.0;   // m
   // What it follows (driver_paths.h): the course's driving line, a polyline
-  // (a CSV of x, y), or a circle through the start.
+  // (a CSV of x, y, or a track's centre line from the terrain), or a circle
+  // through the start.
   enum class Path { Course, Polyline, Circle } path = Path::Course;
   std::vector<Eigen::Vector2d> points;
   bool closed = false;

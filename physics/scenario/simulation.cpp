@@ -122,7 +122,8 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
   if (rung == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
   if (w->planar) vehicle::setPlanarGround(*w->planar, g.hit ? g.point.z() : 0.0);
-  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX, spec.startY, spec.course.part);
+  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX,
+                                                      std::isnan(spec.course.centreY) ? spec.startY : spec.course.centreY, spec.course.part);
   return w;
 }
 

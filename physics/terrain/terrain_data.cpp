@@ -35,7 +35,45 @@ void checkHeightfield(const TerrainData& data) {
     if (!std::isfinite(h)) reject(data, "heightfield height is not finite");
 }
 
+void checkGround(const TerrainData& data) {
+  if (!data.planePoint.allFinite() || !data.planeNormal.allFinite() || data.planeNormal.norm() == 0.0)
+    reject(data, "ground needs a finite plane point and a non-zero normal");
+  for (const GroundPiece& p : data.pieces) {
+    if (!p.at.allFinite() || !std::isfinite(p.heading)) reject(data, "piece '" + p.name + "' is not placed at a finite point");
+    if (p.terrain.kind == TerrainKind::Plane || p.terrain.kind == TerrainKind::Ground)
+      reject(data, "piece '" + p.name + "' must be a mesh, a heightfield, a road or a track");
+    checkTerrainData(p.terrain);
+  }
+}
+
 }  // namespace
+
+Eigen::Vector3d GroundPiece::directionToWorld(const Eigen::Vector3d& v) const {
+  const double c = std::cos(heading), s = std::sin(heading);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()};
+}
+Eigen::Vector3d GroundPiece::directionToLocal(const Eigen::Vector3d& v) const {
+  const double c = std::cos(heading), s = std::sin(heading);
+  return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()};
+}
+Eigen::Vector3d GroundPiece::toWorld(const Eigen::Vector3d& local) const { return directionToWorld(local) + at; }
+Eigen::Vector3d GroundPiece::toLocal(const Eigen::Vector3d& world) const { return directionToLocal(world - at); }
+
+// The terrain's own centre line, or that of its piece of this name, in world coordinates.
+bool findCentreLine(const TerrainData& data, const std::string& name, WorldCentreLine& out) {
+  if (data.name == name && !data.centreLine.empty()) {
+    out = {data.centreLine, data.centreLineClosed};
+    return true;
+  }
+  for (const GroundPiece& p : data.pieces) {
+    if (p.name != name || p.terrain.centreLine.empty()) continue;
+    out.points.clear();
+    for (const Eigen::Vector2d& q : p.terrain.centreLine) out.points.push_back(p.toWorld({q.x(), q.y(), 0}).head<2>());
+    out.closed = p.terrain.centreLineClosed;
+    return true;
+  }
+  return false;
+}
 
 // Throws unless the data of the declared kind are complete and finite.
 void checkTerrainData(const TerrainData& data) {
@@ -48,7 +86,11 @@ void checkTerrainData(const TerrainData& data) {
       if (!data.planePoint.allFinite() || !data.planeNormal.allFinite() || data.planeNormal.norm() == 0.0)
         reject(data, "plane needs a finite point and a non-zero normal");
       return;
-    case TerrainKind::Mesh: return checkMesh(data);
+    case TerrainKind::Mesh:
+      if (!data.triangleMaterials.empty() && data.triangleMaterials.size() != data.triangles.size())
+        reject(data, "mesh has " + std::to_string(data.triangleMaterials.size()) + " triangle materials, expected one per triangle");
+      return checkMesh(data);
+    case TerrainKind::Ground: return checkGround(data);
     case TerrainKind::Heightfield: return checkHeightfield(data);
   }
   reject(data, "unknown terrain kind");

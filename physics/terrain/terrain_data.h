@@ -10,7 +10,13 @@
 
 namespace bdfcar::terrain {
 
-enum class TerrainKind { Plane, Mesh, Heightfield };
+// Ground: a base plane with placed pieces (terrains of the other kinds) on it.
+enum class TerrainKind { Plane, Mesh, Heightfield, Ground };
+
+// What a surface is made of, for the renderer (its texture and colour; the
+// tyres read only the friction). Paint and the two curb colours come from
+// generated tracks (track.h).
+enum class Material : unsigned char { Grass, Asphalt, Concrete, Gravel, Paint, CurbRed, CurbWhite };
 
 // Road painting for the renderer (no effect on physics).
 struct RoadMarkings {
@@ -29,6 +35,8 @@ struct FrictionPatch {
   double friction = 0.8;
   bool contains(double x, double y) const { return x >= xMin && x < xMax && y >= yMin && y < yMax; }
 };
+
+struct GroundPiece;
 
 struct TerrainData {
   std::string name;
@@ -49,7 +57,42 @@ struct TerrainData {
   double x0 = 0, y0 = 0, dx = 1, dy = 1;
   std::vector<double> heights;
   RoadMarkings road;
+  // What the surface is drawn as: `material` everywhere, or for a mesh with
+  // triangleMaterials (one per triangle) each triangle's own.
+  Material material = Material::Grass;
+  std::vector<Material> triangleMaterials;
+  // A generated track's centre line (track.h), in this terrain's frame: the
+  // path a driver may follow around it; closed if the track is a circuit.
+  std::vector<Eigen::Vector2d> centreLine;
+  bool centreLineClosed = false;
+  // Ground: the plane (planePoint, planeNormal, friction, frictionPatches,
+  // material) with these pieces placed on it.
+  std::vector<GroundPiece> pieces;
 };
+
+// A terrain placed on a ground: world = R_z(heading) local + at. A ray
+// reaching both the ground's plane and a piece, or two pieces, at the same
+// distance takes the piece listed last (ground_terrain.cpp): a flat piece on
+// the plane is what the tyres touch.
+struct GroundPiece {
+  std::string name;
+  TerrainData terrain;  // in its own frame; never a plane or a ground
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();  // m
+  double heading = 0.0;                          // rad, about world z
+  Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const;
+  Eigen::Vector3d directionToWorld(const Eigen::Vector3d& local) const;
+  Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const;
+  Eigen::Vector3d directionToLocal(const Eigen::Vector3d& world) const;
+};
+
+// Where a named track piece's centre line lies in the world: the points of
+// the piece called `name` (or of the terrain itself, if it is that track),
+// or nothing if there is no such track.
+struct WorldCentreLine {
+  std::vector<Eigen::Vector2d> points;
+  bool closed = false;
+};
+bool findCentreLine(const TerrainData& data, const std::string& name, WorldCentreLine& out);
 
 // Throws std::invalid_argument (naming sourceFile) unless the data describe a
 // usable surface: finite numbers, a non-zero plane normal, triangle indices in

@@ -2,10 +2,12 @@
 #include "terrain/terrain_file.h"
 
 #include <filesystem>
+#include <numbers>
 
 #include "config/toml_reader.h"
 #include "terrain/obj_file.h"
 #include "terrain/road_file.h"
+#include "terrain/track_file.h"
 
 namespace bdfcar::terrain {
 
@@ -94,14 +96,43 @@ FrictionPatch readFrictionPatch(Table& t) {
   return f;
 }
 
-// Tables each kind may have besides name, kind, friction and markings.
+// Tables each kind may have besides name, kind, friction, friction patches, markings and material.
 std::vector<std::string_view> knownTopLevelKeys(const std::string& kind) {
-  std::vector<std::string_view> keys = {"name", "kind", "friction", "friction_patches", "markings"};
+  std::vector<std::string_view> keys = {"name", "kind", "friction", "friction_patches", "markings", "material"};
   if (kind == "road")
     keys.insert(keys.end(), {"build", "surface", "bumps", "ramps", "rough", "corrugations"});
+  else if (kind == "ground")
+    keys.insert(keys.end(), {"plane", "pieces"});
   else
-    keys.push_back(kind == "plane" ? "plane" : kind == "mesh" ? "mesh" : "heightfield");
+    keys.push_back(kind);  // plane, mesh, heightfield, track: a table of that name
   return keys;
+}
+
+// What the surface is drawn as (`material`); a track is asphalt unless told, anything else grass.
+Material readMaterial(Table& top, const std::string& kind) {
+  const std::string m = top.choice("material", {"grass", "asphalt", "concrete", "gravel"},
+                                   kind == "track" ? "asphalt" : "grass");
+  return m == "asphalt" ? Material::Asphalt : m == "concrete" ? Material::Concrete
+       : m == "gravel"  ? Material::Gravel  : Material::Grass;
+}
+
+TerrainData readTerrain(const std::string& tomlPath, bool asPiece);
+
+// One [[pieces]] entry: a terrain file placed on the ground by `at` and `heading_deg`.
+GroundPiece readPiece(Table& t) {
+  t.rejectUnknownKeys({"name", "terrain", "at", "heading_deg"});
+  GroundPiece p;
+  const std::filesystem::path rel = t.string("terrain");
+  const std::filesystem::path file = rel.is_absolute() ? rel : (std::filesystem::path(t.folderOf("terrain")) / rel).lexically_normal();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) t.fail("names terrain file '" + file.string() + "', which does not exist", "terrain");
+  p.terrain = readTerrain(file.string(), true);
+  p.name = t.string("name", p.terrain.name);
+  const std::vector<double> at = t.numbers("at", Dimension::Length, kCoordinate);
+  t.require(at.size() == 2 || at.size() == 3, "at", "[x, y] or [x, y, z]");
+  p.at = Eigen::Vector3d(at[0], at[1], at.size() == 3 ? at[2] : 0.0);
+  p.heading = t.numberIn("heading_deg", {-360.0, 360.0}, 0.0) * std::numbers::pi / 180.0;
+  return p;
 }
 
 // The surface of the declared kind into data.
@@ -115,6 +146,20 @@ void readSurface(Table& top, const std::string& kind, TerrainData& data) {
   } else if (kind == "heightfield") {
     data.kind = TerrainKind::Heightfield;
     readHeightfield(top.table("heightfield"), data);
+  } else if (kind == "track") {
+    try {
+      buildTrackMesh(readTrack(top.table("track"), data.material), data);
+    } catch (const std::invalid_argument& e) {
+      top.table("track").fail(e.what(), "segments");
+    }
+  } else if (kind == "ground") {
+    data.kind = TerrainKind::Ground;
+    if (top.has("plane")) readPlane(top.table("plane"), data);
+    for (Table& t : top.tables("pieces")) data.pieces.push_back(readPiece(t));
+    for (std::size_t i = 0; i < data.pieces.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (data.pieces[i].name == data.pieces[j].name)
+          top.tables("pieces")[i].fail("is the name of an earlier piece too; give each piece its own `name`", "name");
   } else {
     const bool asMesh = top.choice("build", {"mesh", "heightfield"}, "mesh") == "mesh";
     const RoadSurface road = readRoadSurface(top);
@@ -127,14 +172,17 @@ void readSurface(Table& top, const std::string& kind, TerrainData& data) {
 }
 
 // kind first (it decides which tables belong), then unknown keys, then values.
-TerrainData readTerrain(const std::string& tomlPath) {
+// A piece of a ground is bounded: not a plane, not a ground itself.
+TerrainData readTerrain(const std::string& tomlPath, bool asPiece) {
   Table top = config::parseTomlFile(tomlPath);
-  const std::string kind = top.choice("kind", {"plane", "mesh", "heightfield", "road"});
+  const std::string kind = asPiece ? top.choice("kind", {"mesh", "heightfield", "road", "track"})
+                                   : top.choice("kind", {"plane", "mesh", "heightfield", "road", "track", "ground"});
   top.rejectUnknownKeys(knownTopLevelKeys(kind));
   TerrainData data;
   data.sourceFile = tomlPath;
   data.name = top.string("name", std::filesystem::path(tomlPath).stem().string());
   data.friction = top.numberIn("friction", kFriction);
+  data.material = readMaterial(top, kind);
   for (Table& t : top.optionalTables("friction_patches")) data.frictionPatches.push_back(readFrictionPatch(t));
   if (top.has("markings")) data.road = readMarkings(top.table("markings"));
   readSurface(top, kind, data);
@@ -149,7 +197,7 @@ TerrainData loadTerrain(const std::string& tomlPath) {
   if (!std::filesystem::is_regular_file(tomlPath, ec)) throw TerrainFileError(tomlPath + ": terrain file not found");
   TerrainData data;
   try {
-    data = readTerrain(tomlPath);
+    data = readTerrain(tomlPath, false);
   } catch (const config::ConfigError& e) {
     throw TerrainFileError(e.what());
   }

@@ -29,13 +29,17 @@ Vector3d areaNormal(const std::vector<Vector3d>& v, const std::array<int, 3>& t)
 // Per-corner normals averaged (area-weighted) over the faces around a vertex
 // that meet the corner's face within the crease angle; equal corner normals
 // at a vertex share one output vertex. Zero-area triangles are dropped.
-TriangleMesh withCreaseNormals(const std::vector<Vector3d>& vertices, const Triangles& triangles, double creaseAngle) {
+TriangleMesh withCreaseNormals(const std::vector<Vector3d>& vertices, const Triangles& triangles,
+                               const std::vector<Material>& materials, double creaseAngle) {
   Triangles tris;
+  std::vector<Material> kept;
   std::vector<Vector3d> area, unit;
-  for (const auto& t : triangles) {
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    const auto& t = triangles[k];
     const Vector3d n = areaNormal(vertices, t);
     if (n.squaredNorm() == 0.0) continue;
     tris.push_back(t);
+    kept.push_back(materials[k]);
     area.push_back(n);
     unit.push_back(n.normalized());
   }
@@ -53,6 +57,7 @@ TriangleMesh withCreaseNormals(const std::vector<Vector3d>& vertices, const Tria
   const double cosCrease = std::cos(creaseAngle);
   TriangleMesh out;
   out.triangles = tris;
+  out.materials = std::move(kept);
   for (std::size_t v = 0; v < nv; ++v) {
     const std::size_t begin = first[v], end = first[v + 1], firstOut = out.vertices.size();
     for (std::size_t a = begin; a < end; ++a) {
@@ -86,7 +91,30 @@ TriangleMesh planeSquare(const TerrainData& data, double h) {
                 p - h * along1 + h * along2};
   m.normals.assign(4, n);
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.materials.assign(2, data.material);
   return m;
+}
+
+// Each triangle's material: its own where the mesh lists them, else the terrain's.
+std::vector<Material> materialsOf(const TerrainData& data, std::size_t triangles) {
+  if (data.triangleMaterials.size() == triangles) return data.triangleMaterials;
+  return std::vector<Material>(triangles, data.material);
+}
+
+// The ground's plane, then each piece's triangles moved into the world.
+TriangleMesh groundMesh(const TerrainData& data, double planeHalfSize, double creaseAngle) {
+  TriangleMesh out = planeSquare(data, planeHalfSize);
+  for (const GroundPiece& p : data.pieces) {
+    const TriangleMesh piece = triangulate(p.terrain, planeHalfSize, creaseAngle);
+    const int first = static_cast<int>(out.vertices.size());
+    for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+      out.vertices.push_back(p.toWorld(piece.vertices[v]));
+      out.normals.push_back(p.directionToWorld(piece.normals[v]));
+    }
+    for (const auto& t : piece.triangles) out.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+    out.materials.insert(out.materials.end(), piece.materials.begin(), piece.materials.end());
+  }
+  return out;
 }
 
 }  // namespace
@@ -121,9 +149,11 @@ TriangleMesh triangulate(const TerrainData& data, double planeHalfSize, double c
   checkTerrainData(data);
   switch (data.kind) {
     case TerrainKind::Plane: return planeSquare(data, planeHalfSize);
+    case TerrainKind::Ground: return groundMesh(data, planeHalfSize, creaseAngle);
     case TerrainKind::Heightfield: {
       const std::vector<Vector3d> v = heightfieldVertices(data);
-      return withCreaseNormals(v, gridTriangles(data.cols, data.rows, v), creaseAngle);
+      const Triangles grid = gridTriangles(data.cols, data.rows, v);
+      return withCreaseNormals(v, grid, materialsOf(data, grid.size()), creaseAngle);
     }
     case TerrainKind::Mesh: break;
   }
@@ -132,7 +162,7 @@ TriangleMesh triangulate(const TerrainData& data, double planeHalfSize, double c
   Triangles up = data.triangles;
   for (auto& t : up)
     if (areaNormal(data.vertices, t).z() < 0.0) std::swap(t[1], t[2]);
-  return withCreaseNormals(data.vertices, up, creaseAngle);
+  return withCreaseNormals(data.vertices, up, materialsOf(data, up.size()), creaseAngle);
 }
 
 }  // namespace bdfcar::terrain

@@ -14,12 +14,14 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;      // world, m
   std::vector<Eigen::Vector3d> normals;       // per vertex, unit
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from above
+  std::vector<Material> materials;            // one per triangle
 };
 
 // Vertices with per-vertex normals for drawing: meshes keep their triangles
 // (turned to face up), heightfields become their grid triangles (split as
 // Bullet splits them), a plane becomes a square of half side planeHalfSize (m)
-// centred on its point. Vertices are split where faces meet at more than
+// centred on its point, a ground its plane's square and every piece placed
+// in the world. Each triangle carries its material. Vertices are split where faces meet at more than
 // creaseAngle (rad) so curbs and lips stay sharp while slopes stay smooth.
 TriangleMesh triangulate(const TerrainData& data, double planeHalfSize = 2000.0, double creaseAngle = 0.5);
 

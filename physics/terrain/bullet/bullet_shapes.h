@@ -1,4 +1,4 @@
-// The two Bullet terrains, built from data that checkTerrainData accepted
+// The Bullet terrains, built from data that checkTerrainData accepted
 // (internal: makeTerrain is the public way in).
 #pragma once
 
@@ -14,5 +14,8 @@ std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data);
 
 // Bullet's heightfield over data.heights.
 std::unique_ptr<Terrain> makeHeightfieldTerrain(const TerrainData& data);
+
+// The ground's plane and its pieces, each in its own frame (ground_terrain.cpp).
+std::unique_ptr<Terrain> makeGroundTerrain(const TerrainData& data);
 
 }  // namespace bdfcar::terrain

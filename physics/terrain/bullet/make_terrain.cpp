@@ -34,6 +34,7 @@ std::unique_ptr<Terrain> makeSurface(const TerrainData& data) {
     case TerrainKind::Plane: return std::make_unique<PlaneTerrain>(data.planePoint, data.planeNormal, data.friction);
     case TerrainKind::Mesh: return makeMeshTerrain(data);
     case TerrainKind::Heightfield: return makeHeightfieldTerrain(data);
+    case TerrainKind::Ground: return makeGroundTerrain(data);
   }
   return nullptr;
 }
@@ -44,7 +45,8 @@ std::unique_ptr<Terrain> makeSurface(const TerrainData& data) {
 std::unique_ptr<Terrain> makeTerrain(const TerrainData& data) {
   checkTerrainData(data);
   std::unique_ptr<Terrain> surface = makeSurface(data);
-  if (data.frictionPatches.empty()) return surface;
+  // A ground's plane carries its patches itself (ground_terrain.cpp): they are not for its pieces.
+  if (data.frictionPatches.empty() || data.kind == TerrainKind::Ground) return surface;
   return std::make_unique<PatchedFriction>(std::move(surface), data.frictionPatches);
 }
 

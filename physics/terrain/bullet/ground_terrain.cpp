@@ -1,0 +1,100 @@
+// A ground: its plane and the pieces placed on it, each queried in its own
+// frame. The nearest piece hit wins, a tie going to the piece listed last.
+// Over a piece's footprint (its extent in x and y, in its own frame) the
+// piece is the surface, so it may dip below the plane (a pothole); the plane
+// is the surface where no piece is hit, and outside the footprints where it
+// is hit first.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "terrain/bullet/bullet_shapes.h"
+#include "terrain/bullet/bullet_terrain.h"
+#include "terrain/terrain_mesh.h"
+
+namespace bdfcar::terrain {
+
+namespace {
+
+// A hit this much nearer than another is nearer; closer than that it is the
+// same surface: a flat piece lies on the plane, and Bullet works in single
+// precision (a piece a kilometre from its origin rounds to ~0.1 mm).
+constexpr double kTie = 1e-3;  // m
+
+struct PlacedPiece {
+  GroundPiece placement;  // terrain data dropped: only the transform is used
+  std::unique_ptr<Terrain> terrain;
+  Eigen::Vector3d lo, hi;  // world bounding box, m
+  Eigen::Vector2d footLo, footHi;  // extent in x and y in its own frame, m
+  bool covers(const Eigen::Vector3d& world) const {
+    const Eigen::Vector2d q = placement.toLocal(world).head<2>();
+    return (q.array() >= footLo.array()).all() && (q.array() <= footHi.array()).all();
+  }
+};
+
+class GroundTerrain final : public Terrain {
+ public:
+  explicit GroundTerrain(const TerrainData& data);
+  Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
+
+ private:
+  std::unique_ptr<Terrain> plane_;
+  std::vector<PlacedPiece> pieces_;
+};
+
+// The plane with the ground's friction patches; each piece's own terrain
+// (its patches in its frame) and the box around its triangles in the world.
+GroundTerrain::GroundTerrain(const TerrainData& data) {
+  TerrainData plane = data;
+  plane.kind = TerrainKind::Plane;
+  plane.pieces.clear();
+  plane_ = makeTerrain(plane);
+  for (const GroundPiece& p : data.pieces) {
+    PlacedPiece placed;
+    placed.placement = GroundPiece{p.name, TerrainData{}, p.at, p.heading};
+    placed.terrain = makeTerrain(p.terrain);
+    const TriangleMesh mesh = triangulate(p.terrain);
+    placed.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    placed.hi = -placed.lo;
+    placed.footLo = placed.lo.head<2>();
+    placed.footHi = placed.hi.head<2>();
+    for (const Eigen::Vector3d& v : mesh.vertices) {
+      placed.footLo = placed.footLo.cwiseMin(v.head<2>());
+      placed.footHi = placed.footHi.cwiseMax(v.head<2>());
+      const Eigen::Vector3d w = p.toWorld(v);
+      placed.lo = placed.lo.cwiseMin(w);
+      placed.hi = placed.hi.cwiseMax(w);
+    }
+    pieces_.push_back(std::move(placed));
+  }
+}
+
+Hit GroundTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const {
+  const Hit plane = plane_->castRay(from, direction, maxDistance);
+  const double n = direction.norm();
+  if (!(n > 0) || !std::isfinite(n)) return plane;
+  const Eigen::Vector3d to = from + direction / n * std::min(maxDistance, kMaxRayLength);
+  const Eigen::Vector3d lo = from.cwiseMin(to), hi = from.cwiseMax(to);
+  Hit best;
+  for (const PlacedPiece& p : pieces_) {
+    if ((hi.array() < p.lo.array()).any() || (lo.array() > p.hi.array()).any()) continue;
+    const GroundPiece& at = p.placement;
+    Hit h = p.terrain->castRay(at.toLocal(from), at.directionToLocal(direction), maxDistance);
+    if (!h.hit || (best.hit && h.distance > best.distance + kTie)) continue;
+    h.point = at.toWorld(h.point);
+    h.normal = at.directionToWorld(h.normal);
+    best = h;
+  }
+  if (!best.hit) return plane;
+  if (!plane.hit || plane.distance >= best.distance - kTie) return best;
+  for (const PlacedPiece& p : pieces_)
+    if (p.covers(plane.point)) return best;
+  return plane;
+}
+
+}  // namespace
+
+std::unique_ptr<Terrain> makeGroundTerrain(const TerrainData& data) { return std::make_unique<GroundTerrain>(data); }
+
+}  // namespace bdfcar::terrain
