@@ -2,6 +2,8 @@
 #include <osg/PolygonOffset>
 
 #include <array>
+#include <cmath>
+#include <map>
 #include <vector>
 
 #include "render/nodes.h"
@@ -29,8 +31,10 @@ Corner midpoint(const Corner& a, const Corner& b) {
   return m;
 }
 
-// Appends the triangle, halving its longest edge until every edge is at most kMaxEdge.
-void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const Corner& c, const osg::Vec4& colour) {
+// Appends the triangle to the builder `pick` chooses for it, halving its
+// longest edge until every edge is at most kMaxEdge.
+template <class Pick>
+void addSubdivided(Pick&& pick, const Corner& a, const Corner& b, const Corner& c, const osg::Vec4& colour) {
   std::vector<std::array<Corner, 3>> stack{{a, b, c}};
   while (!stack.empty()) {
     const std::array<Corner, 3> t = stack.back();
@@ -45,6 +49,7 @@ void addSubdivided(TriangleBuilder& tb, const Corner& a, const Corner& b, const 
       }
     }
     if (len <= kMaxEdge) {
+      TriangleBuilder& tb = pick((t[0].p + t[1].p + t[2].p) / 3.0f);
       for (const Corner& q : t)
         tb.vertex(q.p, q.n, colour, osg::Vec2(q.p.x() / kTexelRepeat, q.p.y() / kTexelRepeat));
       continue;
@@ -87,13 +92,14 @@ Look lookOf(terrain::Material m) {
 }  // namespace
 
 // The terrain mesh, subdivided for per-vertex fog, each material in its own
-// geometry; textured in world xy so the surface scrolls past the car at the
-// true ground speed.
+// geometries; textured in world xy so the surface scrolls past the car at
+// the true ground speed. The geometries are tiles of kTile metres, so that
+// the view's culling skips what is behind or beside the camera (a proving
+// ground's rough road alone is half a million triangles).
 osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
-  constexpr int kTextures = 3;
-  std::array<std::array<TriangleBuilder, 3>, kTextures> builders;  // [texture][layer]
-  for (int texture = 1; texture < kTextures; ++texture)
-    for (TriangleBuilder& tb : builders[texture]) tb.enableTexcoords();
+  constexpr float kTile = 100.0f;  // m
+  // (texture, layer, tile x, tile y) -> builder; ordered, so the scene graph is the same every time.
+  std::map<std::array<int, 4>, TriangleBuilder> builders;
   auto corner = [&](int i) {
     return Corner{toOsgF(mesh.vertices[i]),
                   i < static_cast<int>(mesh.normals.size()) ? toOsgF(mesh.normals[i]) : osg::Vec3(0, 0, 1)};
@@ -101,24 +107,35 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& t = mesh.triangles[k];
     const Look look = lookOf(k < mesh.materials.size() ? mesh.materials[k] : terrain::Material::Grass);
-    addSubdivided(builders[look.texture][static_cast<int>(look.layer)], corner(t[0]), corner(t[1]), corner(t[2]),
-                  look.colour);
+    auto pick = [&](const osg::Vec3& centre) -> TriangleBuilder& {
+      const std::array<int, 4> key{look.texture, static_cast<int>(look.layer),
+                                   static_cast<int>(std::floor(centre.x() / kTile)),
+                                   static_cast<int>(std::floor(centre.y() / kTile))};
+      auto [it, added] = builders.try_emplace(key);
+      if (added && look.texture != 0) it->second.enableTexcoords();
+      return it->second;
+    };
+    addSubdivided(pick, corner(t[0]), corner(t[1]), corner(t[2]), look.colour);
   }
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
   const int bins[3] = {kBinGround, kBinAsphalt, kBinRoadPaint};
   const float offsets[3] = {0.0f, -2.0f, -4.0f};
-  for (int texture = 0; texture < kTextures; ++texture)
-    for (int layer = 0; layer < 3; ++layer) {
-      TriangleBuilder& tb = builders[texture][layer];
-      if (tb.v->empty()) continue;
-      osg::ref_ptr<osg::Geometry> g = tb.build();
-      osg::StateSet* ss = g->getOrCreateStateSet();
+  // One state per (texture, layer), shared by its tiles.
+  std::map<std::pair<int, int>, osg::ref_ptr<osg::StateSet>> states;
+  for (auto& [key, tb] : builders) {
+    const int texture = key[0], layer = key[1];
+    osg::ref_ptr<osg::StateSet>& ss = states[{texture, layer}];
+    if (!ss) {
+      ss = new osg::StateSet;
       if (texture != 0)
         ss->setTextureAttributeAndModes(0, (texture == 1 ? grassTexture() : asphaltTexture()).get(), osg::StateAttribute::ON);
       if (layer != 0) ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
       ss->setRenderBinDetails(bins[layer], "RenderBin");
-      geode->addDrawable(g.get());
     }
+    osg::ref_ptr<osg::Geometry> g = tb.build();
+    g->setStateSet(ss.get());
+    geode->addDrawable(g.get());
+  }
   return geode;
 }
 
