@@ -3,6 +3,9 @@
 // speed after 60 s), and what the engine as a state costs per step against
 // the reference sedan on the same manoeuvre.
 #include "report/studies.h"
+
+#include <cmath>
+
 #include "vehicle/powertrain.h"
 #include "vehicle/vehicle_file.h"
 
@@ -46,6 +49,50 @@ void fullThrottle(std::ostream& md) {
   command(md, "assets/" + file);
 }
 
+// When the car next crosses the start line (x = 5 m, heading +x, on the
+// circuit's main straight) after having left it: its lap time.
+double lapTime(const std::vector<vehicle::VehicleSample>& samples) {
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].t > 60 && samples[i - 1].com.x() < 5 && samples[i].com.x() >= 5 && std::abs(samples[i].com.y()) < 10)
+      return samples[i].t;
+  return -1;
+}
+
+// A lap of the proving ground's circuit from rest: its time, what the model
+// chosen by the scene costs and how far it is from the linkage's lap.
+void provingGroundLap(std::ostream& md, int repeats) {
+  const std::string file = "scenarios/proving_ground/circuit_lap.toml";
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(file));
+  scenario::ScenarioSpec full = spec;
+  full.fidelity.automatic = false;
+  full.fidelity.suspension = vehicle::Fidelity::Linkage;
+  const RunSummary scene = runRepeated(spec, repeats), linkage = runRepeated(full, repeats);
+  if (!scene.result.ok || !linkage.result.ok) {
+    md << "The proving-ground lap failed: " << (scene.result.ok ? linkage.result.failure : scene.result.failure)
+       << "\n\n";
+    return;
+  }
+  const scenario::RunResult& a = scene.result;
+  const scenario::StepCost ca = scenario::stepCost(a.stepSeconds), cl = scenario::stepCost(linkage.result.stepSeconds);
+  const std::vector<double> t = column(a.samples, "t"), tl = column(linkage.result.samples, "t");
+  const Difference yaw = compareAt(tl, column(linkage.result.samples, "yawrate"), t, column(a.samples, "yawrate"));
+  const Difference ay = compareAt(tl, column(linkage.result.samples, "ay"), t, column(a.samples, "ay"));
+  md << "A lap of the proving ground (`" << file << "`, assets/terrain/proving_ground.toml): from rest on the "
+     << "start line, the path follower on the 2.90 km circuit's centre line, the speed hold at 60 km/h, the "
+     << "model chosen by the scene (`auto`). Lap time " << fmt("%.1f", lapTime(a.samples)) << " s. Steps on "
+     << "the linkage / kinematic / planar model: " << a.stepsPerModel[0] << " / " << a.stepsPerModel[1] << " / "
+     << a.stepsPerModel[2] << " (" << a.fidelitySwitches << " switches: the kinematic model where the road "
+     << "ahead has curbs). Median over " << repeats << " runs of the wall time per step: "
+     << fmt("%.1f", scene.wallPerStepUs) << " us, against " << fmt("%.1f", linkage.wallPerStepUs)
+     << " us for the same lap on the linkage throughout (ratio "
+     << fmt("%.2f", scene.wallPerStepUs / linkage.wallPerStepUs) << "); per step p50 / p99 / max "
+     << fmt("%.1f", ca.p50) << " / " << fmt("%.1f", ca.p99) << " / " << fmt("%.0f", ca.max) << " us (linkage "
+     << fmt("%.1f", cl.p50) << " / " << fmt("%.1f", cl.p99) << " / " << fmt("%.0f", cl.max) << " us). The "
+     << "scene's lap against the linkage's: yaw rate " << fmt("%.2f", yaw.rmsPercent) << " %, lateral "
+     << "acceleration " << fmt("%.2f", ay.rmsPercent) << " % (RMS as % of peak).\n\n";
+  command(md, "assets/" + file);
+}
+
 }  // namespace
 
 void powertrainSection(std::ostream& md, int repeats) {
@@ -57,6 +104,7 @@ void powertrainSection(std::ostream& md, int repeats) {
      << "inside the residual. `bdfcar info assets/vehicles/sedan_drive.toml`:\n\n```\n"
      << vehicle::describePowertrain(*car.spec.powertrain, car.spec.geometry.wheelRadius) << "```\n\n";
   fullThrottle(md);
+  provingGroundLap(md, repeats);
   // The cost of the engine, the clutch and the transmission: the J-turn with each car (the powertrain's
   // speed hold works the throttle), the median wall time per step, measured in one run of the report.
   const RunSummary ref = runRepeated(scenarioWith("jturn.toml", "sedan.toml"), repeats);

@@ -11,7 +11,6 @@
 
 #include "terrain/bullet/bullet_shapes.h"
 #include "terrain/bullet/bullet_terrain.h"
-#include "terrain/terrain_mesh.h"
 
 namespace bdfcar::terrain {
 
@@ -32,6 +31,26 @@ struct PlacedPiece {
     return (q.array() >= footLo.array()).all() && (q.array() <= footHi.array()).all();
   }
 };
+
+// The corners of the box around a piece's surface in its own frame: a mesh's
+// vertices, a heightfield's grid and its lowest and highest heights.
+std::vector<Eigen::Vector3d> boxCorners(const TerrainData& d) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  if (d.kind == TerrainKind::Heightfield) {
+    const auto [minH, maxH] = std::minmax_element(d.heights.begin(), d.heights.end());
+    lo = Eigen::Vector3d(d.x0, d.y0, *minH);
+    hi = Eigen::Vector3d(d.x0 + (d.cols - 1) * d.dx, d.y0 + (d.rows - 1) * d.dy, *maxH);
+  } else {
+    for (const Eigen::Vector3d& v : d.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+  }
+  std::vector<Eigen::Vector3d> corners;
+  for (int k = 0; k < 8; ++k)
+    corners.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  return corners;
+}
 
 class GroundTerrain final : public Terrain {
  public:
@@ -54,12 +73,11 @@ GroundTerrain::GroundTerrain(const TerrainData& data) {
     PlacedPiece placed;
     placed.placement = GroundPiece{p.name, TerrainData{}, p.at, p.heading};
     placed.terrain = makeTerrain(p.terrain);
-    const TriangleMesh mesh = triangulate(p.terrain);
     placed.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     placed.hi = -placed.lo;
     placed.footLo = placed.lo.head<2>();
     placed.footHi = placed.hi.head<2>();
-    for (const Eigen::Vector3d& v : mesh.vertices) {
+    for (const Eigen::Vector3d& v : boxCorners(p.terrain)) {
       placed.footLo = placed.footLo.cwiseMin(v.head<2>());
       placed.footHi = placed.footHi.cwiseMax(v.head<2>());
       const Eigen::Vector3d w = p.toWorld(v);
