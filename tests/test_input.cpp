@@ -10,11 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "input/axis_response.h"
 #include "input/driver_controls.h"
@@ -22,14 +19,12 @@
 #include "input/input_system.h"
 #include "input/mapping.h"
 #include "input/monitor.h"
+#include "input_virtual.h"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace bdfcar::input;
-
-constexpr double kDt = 0.01;  // s, one tick
-constexpr double kTol = 1e-12;
+using namespace bdfcar::test_input;
 
 // Mapping files of the tests. The numbers here are the ones the expected
 // values below are computed from.
@@ -140,51 +135,6 @@ double padThrottle(int raw) { return std::sqrt(raw / 32767.0); }
 // Brake of kGamepadToml: trigger 0..32767, gain 2, clamped at 1.
 double padBrake(int raw) { return std::min(1.0, 2.0 * raw / 32767.0); }
 
-// A per-test folder for mapping files.
-fs::path freshDir(const std::string& tag) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() /
-                 ("bdfcar_test_input_" + tag + "_" + info->name() + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// Writes a file and returns its path.
-fs::path writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
-  std::ofstream(dir / name) << text;
-  return dir / name;
-}
-
-// A virtual device held open by the test to move its axes and buttons.
-struct Virtual {
-  SDL_JoystickID id = -1;
-  SDL_Joystick* joystick = nullptr;
-};
-
-// Attaches a virtual device of an SDL joystick type with the given counts.
-Virtual attach(SDL_JoystickType type, const char* name, int axes, int buttons) {
-  SDL_VirtualJoystickDesc desc{};
-  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-  desc.type = static_cast<Uint16>(type);
-  desc.naxes = static_cast<Uint16>(axes);
-  desc.nbuttons = static_cast<Uint16>(buttons);
-  desc.name = name;
-  const int index = SDL_JoystickAttachVirtualEx(&desc);
-  Virtual v;
-  if (index < 0) return v;
-  v.joystick = SDL_JoystickOpen(index);
-  v.id = SDL_JoystickInstanceID(v.joystick);
-  return v;
-}
-
-// Current device index of a device (indices shift as devices come and go).
-int deviceIndex(SDL_JoystickID id) {
-  for (int i = 0; i < SDL_NumJoysticks(); ++i)
-    if (SDL_JoystickGetDeviceInstanceID(i) == id) return i;
-  return -1;
-}
-
 // Unplugs a virtual device.
 void detach(Virtual& v) {
   SDL_JoystickClose(v.joystick);
@@ -204,25 +154,19 @@ void pushKey(SDL_Scancode code, bool down, bool repeat = false) {
 }
 
 // SDL headless, the test's mapping files, and only the test's virtual devices.
-class InputDevices : public ::testing::Test {
+class InputDevices : public VirtualDevicesTest {
  protected:
   void SetUp() override {
-    setenv("SDL_VIDEODRIVER", "dummy", 1);
-    ASSERT_EQ(SDL_Init(SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER), 0) << SDL_GetError();
-    dir = freshDir("devices");
+    VirtualDevicesTest::SetUp();
     writeFile(dir, "keyboard.toml", kKeyboardToml);
     writeFile(dir, "wheel.toml", kWheelToml);
     writeFile(dir, "gamepad.toml", kGamepadToml);
-  }
-  void TearDown() override {
-    SDL_Quit();  // also detaches the virtual devices
-    fs::remove_all(dir);
   }
   // Options that ignore any real device on the machine.
   InputOptions options() {
     InputOptions o;
     o.mappingDir = dir;
-    o.deviceFilter = "bdfcar-test";
+    o.deviceFilter = kVirtualPrefix;
     o.onMessage = [this](const std::string& m) { messages.push_back(m); };
     return o;
   }
@@ -237,13 +181,15 @@ class InputDevices : public ::testing::Test {
                   SDL_CONTROLLER_BUTTON_MAX);
   }
 
-  fs::path dir;
   std::vector<std::string> messages;
 };
 
 TEST_F(InputDevices, WheelAxesMapThroughCalibrationDeadzoneCurveAndGain) {
   Virtual wheel = attachWheel();
   ASSERT_GE(wheel.id, 0) << SDL_GetError();
+  // Pedals released when the wheel is opened, as the file expects them (their still reading).
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 32767);
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 2, -32768);
   InputSystem input(options());
   for (int raw : {-32768, -30000, -12345, -3001, -2999, 0, 1500, 3001, 17000, 29999, 32767}) {
     SCOPED_TRACE(raw);
@@ -268,6 +214,9 @@ TEST_F(InputDevices, GameControllerAxesMapAsTheFileSays) {
   ASSERT_GE(pad.id, 0) << SDL_GetError();
   SDL_GameController* view = SDL_GameControllerOpen(deviceIndex(pad.id));  // to read what SDL reports
   ASSERT_NE(view, nullptr) << SDL_GetError();
+  // Triggers released when the pad is opened (a virtual axis at 0 reads half-way on a trigger).
+  SDL_JoystickSetVirtualAxis(pad.joystick, SDL_CONTROLLER_AXIS_TRIGGERRIGHT, -32768);
+  SDL_JoystickSetVirtualAxis(pad.joystick, SDL_CONTROLLER_AXIS_TRIGGERLEFT, -32768);
   InputSystem input(options());
   for (int raw : {-32768, -20000, -6553, -6000, 0, 6000, 6554, 25000, 32767}) {
     SCOPED_TRACE(raw);
@@ -340,12 +289,14 @@ TEST_F(InputDevices, DevicePluggedInMidDriveIsPickedUp) {
 
 TEST_F(InputDevices, UnpluggedWheelFallsBackToTheKeyboardWithAMessage) {
   Virtual wheel = attachWheel();
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 32767);  // the throttle released when opened
   InputSystem input(options());
   SDL_JoystickSetVirtualAxis(wheel.joystick, 0, -24000);
   SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 10000);
   const Controls before = input.poll(kDt);
   ASSERT_EQ(before.source, DeviceKind::Wheel);
   ASSERT_GT(before.steering, 0.5);
+  ASSERT_NEAR(before.throttle, wheelThrottle(10000), kTol);
 
   detach(wheel);
   // The keyboard (no key held) takes over from the wheel's last values and
@@ -434,15 +385,12 @@ TEST_F(InputDevices, MonitorListsDevicesAndShowsLiveValues) {
   ASSERT_NE(out, nullptr);
   MonitorOptions o;
   o.mappingDir = dir;
-  o.deviceFilter = "bdfcar-test";
+  o.deviceFilter = kVirtualPrefix;
   o.seconds = 0.03;
   o.printInterval = 0.01;
   o.out = out;
   EXPECT_EQ(runInputMonitor(o), 0);
-  std::rewind(out);
-  std::string text;
-  for (int ch; (ch = std::fgetc(out)) != EOF;) text += static_cast<char>(ch);
-  std::fclose(out);
+  const std::string text = readAndClose(out);
   EXPECT_NE(text.find("'bdfcar-test wheel'  wheel  mapping wheel.toml  4 axes"), std::string::npos) << text;
   EXPECT_NE(text.find("axes [-15000 0 0 0]"), std::string::npos) << text;
   char steering[32];
