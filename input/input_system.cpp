@@ -187,6 +187,7 @@ void readDevice(OpenDevice& d, Controls& c) {
   c.clutch = value[static_cast<int>(Axis::Clutch)];
   c.hasClutch = d.mapping->axes[static_cast<int>(Axis::Clutch)].bound;
   c.handbrake = value[static_cast<int>(Axis::Handbrake)];
+  c.speedSensitive = d.mapping->speedSensitive;
   c.source = d.kind;
 }
 
@@ -236,6 +237,7 @@ Controls InputSystem::poll(double dt) {
     c.clutch = s.keyboardAnalog.clutch;
     c.hasClutch = !keys.clutch.empty();
     c.handbrake = s.keyboardAnalog.handbrake;
+    c.speedSensitive = s.keyboard.speedSensitive;
     c.source = DeviceKind::Keyboard;
   }
   s.last = c;

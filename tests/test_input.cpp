@@ -443,6 +443,15 @@ TEST(InputMapping, BadFilesNameFileLineKeyAndExpectation) {
        "(0, 1000]"},
       {"keyboard_name.toml", "[device]\ntype = \"keyboard\"\nname_contains = [\"x\"]\n", 3, "device.name_contains",
        "one of: type"},
+      {"speed_scale_zero.toml",
+       "[device]\ntype = \"wheel\"\n[speed_sensitive_steering]\nspeed = \"80 km/h\"\nscale = 0\n", 5,
+       "speed_sensitive_steering.scale", "(0, 1], got 0"},
+      {"speed_negative.toml",
+       "[device]\ntype = \"keyboard\"\n[speed_sensitive_steering]\nspeed = \"-10 km/h\"\nscale = 0.5\n", 4,
+       "speed_sensitive_steering.speed", "(0, 200]"},
+      {"speed_unknown.toml",
+       "[device]\ntype = \"joystick\"\n[speed_sensitive_steering]\nspeed = 20\nscale = 0.5\nmin_scale = 0.2\n", 6,
+       "speed_sensitive_steering.min_scale", "one of: speed, scale"},
   };
   for (const BadFile& bad : cases) {
     SCOPED_TRACE(bad.name);
@@ -562,12 +571,12 @@ TEST(DriverControls, AWheelsRotationSteersTheCarsWheelByItsOwnAngle) {
   c.source = DeviceKind::Wheel;
   c.steering = 0.2;
   c.steeringWheelAngle = 0.2 * 450 * deg;
-  EXPECT_NEAR(toDriverInput(c, full).steer, 90.0 / 210.0, 1e-12);
+  EXPECT_NEAR(toDriverInput(c, full, 0.0).steer, 90.0 / 210.0, 1e-12);
   c.steering = -0.8;
   c.steeringWheelAngle = -0.8 * 450 * deg;
-  EXPECT_EQ(toDriverInput(c, full).steer, -1.0);  // 360 degrees: past the car's lock
+  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -1.0);  // 360 degrees: past the car's lock
   c.steeringWheelAngle = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(toDriverInput(c, full).steer, -0.8);
+  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -0.8);
 }
 
 // A clutch pedal is a device's clutch axis; the keyboard's clutch key is not
@@ -579,14 +588,14 @@ TEST(DriverControls, PedalsGearsAndHandbrakeReachTheSimulation) {
   c.clutch = 1.0;
   c.handbrake = 0.7;
   c.gearUp = c.gearDown = true;
-  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0);
+  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0, 0.0);
   EXPECT_FALSE(in.clutchPedal);
   EXPECT_EQ(in.clutch, 1.0);
   EXPECT_EQ(in.handbrake, 0.7);
   EXPECT_EQ(in.shift, 1);
   c.source = DeviceKind::Wheel;
   c.gearUp = false;
-  in = toDriverInput(c, 1.0);
+  in = toDriverInput(c, 1.0, 0.0);
   EXPECT_TRUE(in.clutchPedal);
   EXPECT_EQ(in.shift, -1);
 }

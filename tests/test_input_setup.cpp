@@ -1,12 +1,16 @@
-// Wheel and controller setup: pedals read from where they rest. Expected
-// values are the numbers the tests write into their files, worked out by
-// hand here, not through the library's functions.
+// Wheel and controller setup: pedals read from where they rest, and
+// speed-sensitive steering. Expected values are the numbers the tests write
+// into their files, worked out by hand here, not through the library's functions.
 #include <SDL.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
+#include "config/toml_reader.h"
 #include "input/axis_response.h"
+#include "input/driver_controls.h"
 #include "input/input_system.h"
 #include "input/mapping.h"
 #include "input_virtual.h"
@@ -59,8 +63,13 @@ type = "keyboard"
 
 [keys]
 steer_left = "Left"
+
+[speed_sensitive_steering]
+speed = "72 km/h"
+scale = 0.4
 )";
 
+DeviceMapping shippedLikeWheel() { return parseMapping(kShippedLikeWheel, "wheel.toml"); }
 // A pedal resting inside its travel reads released there, and the travel
 // from there to the pressed end spans 0..1.
 TEST(PedalRest, TheRestInsideTheTravelBecomesTheReleasedEnd) {
@@ -91,6 +100,38 @@ TEST(PedalRest, TheRestInsideTheTravelBecomesTheReleasedEnd) {
   AxisMapping plain;
   plain.bound = true;
   EXPECT_EQ(moreReleased(plain, 100, 200), 100);
+}
+
+// 72 km/h = 20 m/s, scale 0.4: the factor falls from 1 to 0.4 over 0..20 m/s.
+TEST(SpeedSensitiveSteering, FollowsTheStatedLineAndIsOffByDefault) {
+  const DeviceMapping keyboard = parseMapping(kKeyboard, "keyboard.toml");
+  EXPECT_NEAR(keyboard.speedSensitive.speed, 20.0, 1e-12);
+  Controls c;
+  c.steering = 0.5;
+  c.speedSensitive = keyboard.speedSensitive;
+  EXPECT_EQ(toDriverInput(c, 1.0, 0.0).steer, 0.5);
+  EXPECT_NEAR(toDriverInput(c, 1.0, 5.0).steer, 0.425, kTol);   // 0.5 * (1 - 0.6 * 0.25)
+  EXPECT_NEAR(toDriverInput(c, 1.0, 10.0).steer, 0.35, kTol);   // 0.5 * (1 - 0.6 * 0.5)
+  EXPECT_NEAR(toDriverInput(c, 1.0, -10.0).steer, 0.35, kTol);  // reversing
+  EXPECT_NEAR(toDriverInput(c, 1.0, 20.0).steer, 0.2, kTol);
+  EXPECT_NEAR(toDriverInput(c, 1.0, 45.0).steer, 0.2, kTol);    // held above the speed
+  // A wheel turning the car's wheel by its own angle: 90 of 210 degrees, then x 0.7 at 10 m/s.
+  c.steeringWheelAngle = 90.0 * M_PI / 180.0;
+  EXPECT_NEAR(toDriverInput(c, 210.0 * M_PI / 180.0, 10.0).steer, 0.3, kTol);
+
+  // Off (no table): the input bit for bit what it was, at any speed.
+  const DeviceMapping plain = shippedLikeWheel();
+  EXPECT_EQ(plain.speedSensitive.speed, 0.0);
+  Controls d;
+  d.speedSensitive = plain.speedSensitive;
+  for (double steer : {-1.0, -0.123456789, 0.0, 0.3, 0.987654321}) {
+    d.steering = steer;
+    for (double v : {0.0, 3.3, 27.8, 80.0}) {
+      EXPECT_EQ(toDriverInput(d, 1.0, v), toDriverInput(d, 1.0, 0.0));
+      EXPECT_EQ(toDriverInput(d, 1.0, v).steer, steer);
+    }
+  }
+  EXPECT_EQ(speedSensitiveFactor(plain.speedSensitive, 50.0), 1.0);
 }
 
 // The test's mapping files and only the test's virtual devices.
@@ -138,6 +179,44 @@ TEST_F(SetupDevices, PedalsRestingWhereTheFileDoesNotExpectReadReleased) {
   EXPECT_EQ(input.poll(kDt).throttle, 0.0);
   SDL_JoystickSetVirtualAxis(wheel.joystick, 2, 0);
   EXPECT_EQ(input.poll(kDt).throttle, 32767.0 / 65535.0);
+}
+
+TEST_F(SetupDevices, AKeyboardOrDeviceMappingsSpeedSensitiveSteeringReachesTheControls) {
+  InputSystem keyboardOnly(options());
+  EXPECT_NEAR(keyboardOnly.poll(kDt).speedSensitive.speed, 20.0, 1e-12);
+  EXPECT_EQ(keyboardOnly.poll(kDt).speedSensitive.scale, 0.4);
+  ASSERT_GE(attachWheel().id, 0);
+  const Controls c = keyboardOnly.poll(kDt);
+  EXPECT_EQ(c.source, DeviceKind::Wheel);
+  EXPECT_EQ(c.speedSensitive.speed, 0.0);  // the wheel's file has none
+}
+
+// Every key the mapping loader knows (it lists them to refuse unknown ones)
+// is in assets/input/README.md: as `key =` in an example, as a [table], or
+// in the list of actions.
+TEST(MappingDocs, EveryKeyTheLoaderKnowsIsInTheReadme) {
+  const fs::path shipped = BDFCAR_SHIPPED_INPUT_DIR;
+  std::ifstream in(shipped / "README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(readme.empty());
+  bdfcar::config::startKeyLog();
+  loadMappingDir(shipped);
+  parseMapping(kKeyboard, "keyboard.toml");
+  parseMapping("[device]\ntype = \"wheel\"\n[speed_sensitive_steering]\nspeed = 20\nscale = 0.5\n", "w.toml");
+  const auto log = bdfcar::config::stopKeyLog();
+  std::size_t checked = 0;
+  for (const auto& [file, key] : log) {
+    const std::size_t dot = key.rfind('.');
+    const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
+    const bool documented = readme.find(leaf + " =") != std::string::npos ||
+                            readme.find("[" + key + "]") != std::string::npos ||
+                            readme.find("[" + key + ".") != std::string::npos ||
+                            (key.rfind("actions.", 0) == 0 && readme.find(leaf + ",") != std::string::npos) ||
+                            (key.rfind("actions.", 0) == 0 && readme.find(leaf + ".") != std::string::npos);
+    EXPECT_TRUE(documented) << key << " (read in " << file << ") is not in assets/input/README.md";
+    ++checked;
+  }
+  EXPECT_GT(checked, 30u);
 }
 
 }  // namespace

@@ -72,6 +72,9 @@ struct DeviceMapping {
   KeyboardKeys keys;
   KeyboardRamps ramps;
 
+  // Any device, the keyboard included: off unless the file has the table.
+  SpeedSensitiveSteering speedSensitive;
+
   // Per Action: button indices (joystick, wheel), SDL game-controller button
   // numbers, or key scancodes (keyboard).
   std::array<std::vector<int>, kActionCount> actions{};
