@@ -1,18 +1,27 @@
-// Wheel and controller setup: pedals read from where they rest, and
-// speed-sensitive steering. Expected values are the numbers the tests write
-// into their files, worked out by hand here, not through the library's functions.
+// Wheel and controller setup: `bdfcar input --calibrate` (the capture ->
+// mapping rules, the file it writes read back through the real loader, and
+// the whole command on a scripted SDL virtual wheel), pedals read from where
+// they rest, and speed-sensitive steering. Expected
+// values are the numbers the tests write into their samples and files, worked
+// out by hand here, not through the library's functions.
 #include <SDL.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "config/toml_reader.h"
 #include "input/axis_response.h"
+#include "input/calibration.h"
 #include "input/driver_controls.h"
 #include "input/input_system.h"
 #include "input/mapping.h"
+#include "input/monitor.h"
 #include "input_virtual.h"
 
 namespace {
@@ -70,6 +79,225 @@ scale = 0.4
 )";
 
 DeviceMapping shippedLikeWheel() { return parseMapping(kShippedLikeWheel, "wheel.toml"); }
+
+// Control value of `control` in a mapping at a raw reading.
+double read(const DeviceMapping& m, Axis control, int raw) {
+  return axisResponse(m.axes[static_cast<int>(control)], control, raw);
+}
+
+const AxisMapping& axisOf(const DeviceMapping& m, Axis control) { return m.axes[static_cast<int>(control)]; }
+
+// Samples of a 5-axis device: `still` rows of rests, then each axis's moves
+// one after the other (a move: linear from the rest to a value and back, 20 rows each way).
+struct Script {
+  std::vector<int> rest;
+  std::vector<std::vector<int>> rows;
+  Script(std::vector<int> rests, int still) : rest(std::move(rests)), rows(still, rest) {}
+  void move(int axis, int to) {
+    for (int leg = 0; leg < 2; ++leg)
+      for (int k = 1; k <= 20; ++k) {
+        std::vector<int> row = rest;
+        const double f = leg == 0 ? k / 20.0 : 1.0 - k / 20.0;
+        row[axis] = static_cast<int>(std::lround(rest[axis] + f * (to - rest[axis])));
+        rows.push_back(row);
+      }
+  }
+};
+
+// A wheel's capture: steering (axis 0) resting at 120, throttle (2) at
+// 32767, brake (3) at 32000 (not quite its end), clutch (4) at -32768; axis 1
+// wobbles a little. Turned left and right, then throttle, brake, clutch.
+Script wheelCapture() {
+  Script s({120, 0, 32767, 32000, -32768}, 100);
+  for (std::size_t t = 0; t < s.rows.size(); ++t) s.rows[t][1] = t % 2 ? 40 : -40;
+  s.move(0, -32768);
+  s.move(0, 32767);
+  s.move(2, -32768);
+  s.move(3, -30000);
+  s.move(4, 32767);
+  return s;
+}
+
+TEST(Calibration, CapturedExtremesReadFullAndRestsReadReleasedThroughTheLoader) {
+  const Script s = wheelCapture();
+  const Calibration cal = calibrateAxes(s.rows, 100, shippedLikeWheel());
+  ASSERT_TRUE(cal.steeringFound);
+  const std::string text = mappingToml(cal.mapping, {"a test"});
+  const DeviceMapping m = parseMapping(text, "calibrated.toml");  // the real loader
+  SCOPED_TRACE(text);
+
+  EXPECT_EQ(axisOf(m, Axis::Steering).axis, 0);
+  EXPECT_EQ(axisOf(m, Axis::Throttle).axis, 2);
+  EXPECT_EQ(axisOf(m, Axis::Brake).axis, 3);
+  EXPECT_EQ(axisOf(m, Axis::Clutch).axis, 4);
+  EXPECT_FALSE(axisOf(m, Axis::Handbrake).bound);
+  // Steering: SDL reads + to the right, bdfcar steers + to the left.
+  EXPECT_EQ(read(m, Axis::Steering, -32768), 1.0);
+  EXPECT_EQ(read(m, Axis::Steering, 32767), -1.0);
+  EXPECT_EQ(read(m, Axis::Steering, 120), 0.0);
+  // Pedals: released at their rest (and beyond), fully down at the extreme pressed.
+  EXPECT_EQ(read(m, Axis::Throttle, 32767), 0.0);
+  EXPECT_EQ(read(m, Axis::Throttle, -32768), 1.0);
+  EXPECT_EQ(read(m, Axis::Brake, 32000), 0.0);
+  EXPECT_EQ(read(m, Axis::Brake, 32767), 0.0);
+  EXPECT_EQ(read(m, Axis::Brake, -30000), 1.0);
+  EXPECT_NEAR(read(m, Axis::Brake, 1000), std::pow(0.5, 1.5), kTol);  // half-way, through the file's curve
+  EXPECT_EQ(read(m, Axis::Clutch, -32768), 0.0);
+  EXPECT_EQ(read(m, Axis::Clutch, 32767), 1.0);
+  // What the device's file had besides the axes is kept; the file claims the device by name.
+  const DeviceMapping base = shippedLikeWheel();
+  EXPECT_EQ(m.kind, DeviceKind::Wheel);
+  EXPECT_EQ(m.nameContains, base.nameContains);
+  EXPECT_EQ(m.actions, base.actions);
+  EXPECT_EQ(axisOf(m, Axis::Steering).rotationDeg, 900.0);
+  EXPECT_TRUE(m.forceFeedback.enabled);
+  EXPECT_EQ(m.forceFeedback.gain, 0.6);
+  EXPECT_EQ(text.rfind("# a test\n", 0), 0u);
+}
+
+TEST(Calibration, PedalsAreNamedByTheOrderInWhichTheyWerePressed) {
+  Script s({0, 32767, 32767, 32767}, 50);
+  s.move(0, -32768);  // one count further left: no note on an uneven turn
+  s.move(0, 32767);
+  s.move(3, -32768);  // brake first ...
+  s.move(1, -32768);  // ... then throttle, then clutch
+  s.move(2, -32768);
+  DeviceMapping stick;  // a base file without axes
+  stick.kind = DeviceKind::Joystick;
+  const Calibration cal = calibrateAxes(s.rows, 50, stick);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Throttle).axis, 3);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Brake).axis, 1);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Clutch).axis, 2);
+  // Without a steering in the base file: SDL's + to the right is inverted.
+  EXPECT_TRUE(axisOf(cal.mapping, Axis::Steering).invert);
+  ASSERT_EQ(cal.report.size(), 4u);
+  EXPECT_EQ(cal.report[1], "throttle: axis 3, released at 32767, fully down at -32768 (pressed 1st)");
+}
+
+TEST(Calibration, NoSteeringWithoutAnAxisTurnedBothWays) {
+  Script s({0, 32767}, 50);
+  s.move(0, 5000);    // a nudge: too little to be anything
+  s.move(1, -32768);  // a pedal
+  const Calibration cal = calibrateAxes(s.rows, 50, shippedLikeWheel());
+  EXPECT_FALSE(cal.steeringFound);
+  EXPECT_FALSE(axisOf(cal.mapping, Axis::Steering).bound);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Throttle).axis, 1);
+}
+
+TEST(Calibration, TheWiderCentredAxisSteersAndTheOtherIsReportedUnassigned) {
+  Script s({0, 0, -32768}, 50);
+  s.move(1, -20000);
+  s.move(1, 20000);
+  s.move(0, -32768);  // wider: the wheel, though turned after the other
+  s.move(0, 32767);
+  s.move(2, 32767);
+  const Calibration cal = calibrateAxes(s.rows, 50, shippedLikeWheel());
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Steering).axis, 0);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Throttle).axis, 2);
+  ASSERT_FALSE(cal.report.empty());
+  EXPECT_NE(cal.report.back().find("axis 1: moved -20000 .. 20000 from rest 0 but rests mid-travel"), std::string::npos)
+      << cal.report.back();
+}
+
+TEST(Calibration, AnUnevenTurnTakesFullLockAtTheShorterSideAndSaysSo) {
+  Script s({1000, 32767}, 50);
+  s.move(0, -20000);  // 21000 one way
+  s.move(0, 32767);   // 31767 the other
+  s.move(1, -32768);
+  const Calibration cal = calibrateAxes(s.rows, 50, shippedLikeWheel());
+  const DeviceMapping m = parseMapping(mappingToml(cal.mapping, {}), "calibrated.toml");
+  EXPECT_EQ(read(m, Axis::Steering, -20000), 1.0);
+  EXPECT_EQ(read(m, Axis::Steering, 22000), -1.0);  // 1000 + 21000
+  EXPECT_EQ(read(m, Axis::Steering, 1000), 0.0);
+  EXPECT_NEAR(read(m, Axis::Steering, 11500), -0.5, kTol);
+  ASSERT_GE(cal.report.size(), 2u);
+  EXPECT_NE(cal.report[1].find("turned 31767 one way but 21000 the other"), std::string::npos) << cal.report[1];
+}
+
+TEST(Calibration, TheStillReadingIsTheMedianSoATwitchDoesNotMoveTheRest) {
+  Script s({0, 32767}, 51);
+  s.rows[10][1] = -32768;  // a foot on the pedal for one sample of the still reading
+  s.move(0, -32768);
+  s.move(0, 32767);
+  s.move(1, -32768);
+  const Calibration cal = calibrateAxes(s.rows, 51, shippedLikeWheel());
+  EXPECT_EQ(cal.axes[1].rest, 32767);
+  EXPECT_EQ(axisOf(cal.mapping, Axis::Throttle).rawMin, 32767);
+  EXPECT_THROW(calibrateAxes(s.rows, 0, shippedLikeWheel()), std::invalid_argument);
+  EXPECT_THROW(calibrateAxes(s.rows, static_cast<int>(s.rows.size()), shippedLikeWheel()), std::invalid_argument);
+}
+
+// Every key of a device's file, written and read back, comes back the same
+// (names for a game controller's axes and buttons, escapes in the name).
+TEST(MappingText, ReadsBackToTheSameMapping) {
+  const char* const pad = R"(
+[device]
+type = "gamecontroller"
+name_contains = ["Pad \"Pro\" \\ 2", "other"]
+
+[axes.steering]
+axis = "leftx"
+invert = true
+deadzone = 0.15
+gain = 1.25
+curve = "power"
+exponent = 1.7
+min = -30000
+max = 31000
+rotation_deg = 540
+
+[axes.throttle]
+axis = "righttrigger"
+
+[axes.handbrake]
+axis = "lefty"
+min = 0
+max = -32768
+
+[speed_sensitive_steering]
+speed = "100 km/h"
+scale = 0.35
+
+[actions]
+pause = "start"
+reset = ["y", "back"]
+rewind = "dpleft"
+
+[force_feedback]
+gain = 0.3
+invert = true
+)";
+  const DeviceMapping a = parseMapping(pad, "pad.toml");
+  const std::string text = mappingToml(a, {"line one", "", "line three"});
+  const DeviceMapping b = parseMapping(text, "again.toml");
+  SCOPED_TRACE(text);
+  EXPECT_EQ(b.kind, a.kind);
+  EXPECT_EQ(b.nameContains, (std::vector<std::string>{"Pad \"Pro\" \\ 2", "other"}));
+  for (int i = 0; i < kAxisCount; ++i) {
+    SCOPED_TRACE(i);
+    const AxisMapping &x = a.axes[i], &y = b.axes[i];
+    EXPECT_EQ(y.bound, x.bound);
+    EXPECT_EQ(y.axis, x.axis);
+    EXPECT_EQ(y.invert, x.invert);
+    EXPECT_EQ(y.deadzone, x.deadzone);
+    EXPECT_EQ(y.gain, x.gain);
+    EXPECT_EQ(y.curve, x.curve);
+    EXPECT_EQ(y.exponent, x.exponent);
+    EXPECT_EQ(y.rawMin, x.rawMin);
+    EXPECT_EQ(y.rawMax, x.rawMax);
+    EXPECT_EQ(y.rotationDeg, x.rotationDeg);
+  }
+  EXPECT_EQ(b.axes[static_cast<int>(Axis::Throttle)].rawMin, 0);  // a trigger's default, written out
+  EXPECT_EQ(b.speedSensitive.speed, a.speedSensitive.speed);
+  EXPECT_EQ(b.speedSensitive.scale, 0.35);
+  EXPECT_EQ(b.actions, a.actions);
+  EXPECT_EQ(b.forceFeedback.gain, 0.3);
+  EXPECT_TRUE(b.forceFeedback.invert);
+  EXPECT_EQ(text.rfind("# line one\n#\n# line three\n\n[device]\n", 0), 0u);
+  EXPECT_NE(text.find("axis = \"righttrigger\""), std::string::npos);
+  EXPECT_THROW(mappingToml(parseMapping(kKeyboard, "k.toml"), {}), std::invalid_argument);
+}
+
 // A pedal resting inside its travel reads released there, and the travel
 // from there to the pressed end spans 0..1.
 TEST(PedalRest, TheRestInsideTheTravelBecomesTheReleasedEnd) {
@@ -148,6 +376,13 @@ class SetupDevices : public VirtualDevicesTest {
     o.deviceFilter = kVirtualPrefix;
     return o;
   }
+  MonitorOptions commandOptions(std::FILE* out) const {
+    MonitorOptions o;
+    o.mappingDir = dir;
+    o.deviceFilter = kVirtualPrefix;
+    o.out = out;
+    return o;
+  }
   Virtual attachWheel(void (*update)(void*) = nullptr, void* userdata = nullptr) {
     return attach(SDL_JOYSTICK_TYPE_WHEEL, "bdfcar-test wheel", 4, 8, update, userdata);
   }
@@ -189,6 +424,104 @@ TEST_F(SetupDevices, AKeyboardOrDeviceMappingsSpeedSensitiveSteeringReachesTheCo
   const Controls c = keyboardOnly.poll(kDt);
   EXPECT_EQ(c.source, DeviceKind::Wheel);
   EXPECT_EQ(c.speedSensitive.speed, 0.0);  // the wheel's file has none
+}
+
+// A person at a virtual wheel, scripted per SDL update: still, then the
+// wheel lock to lock, then the throttle, then the brake (part-way).
+struct Person {
+  SDL_Joystick* joystick = nullptr;
+  int calls = 0;
+  bool done = false;
+  static int along(int n, int from, int to, int start, int length) {  // linear from -> to over [start, start + length)
+    return static_cast<int>(std::lround(from + (to - from) * std::clamp((n - start) / double(length), 0.0, 1.0)));
+  }
+  static void update(void* self) {
+    Person& p = *static_cast<Person*>(self);
+    if (!p.joystick || p.done) return;
+    const int n = p.calls++;
+    int steer = 120, throttle = -32768, brake = -31000;
+    if (n >= 130 && n < 150) steer = along(n, 120, -32768, 130, 19);
+    else if (n >= 150 && n < 170) steer = along(n, -32768, 32767, 150, 19);
+    else if (n >= 170 && n < 180) steer = along(n, 32767, 120, 170, 9);
+    if (n >= 180 && n < 200) throttle = along(n, -32768, 32767, 180, 19);
+    else if (n >= 200 && n < 210) throttle = along(n, 32767, -32768, 200, 9);
+    if (n >= 210 && n < 230) brake = along(n, -31000, 30000, 210, 19);
+    else if (n >= 230 && n < 240) brake = along(n, 30000, -31000, 230, 9);
+    SDL_JoystickSetVirtualAxis(p.joystick, 0, static_cast<Sint16>(steer));
+    SDL_JoystickSetVirtualAxis(p.joystick, 2, static_cast<Sint16>(throttle));
+    SDL_JoystickSetVirtualAxis(p.joystick, 3, static_cast<Sint16>(brake));
+  }
+};
+
+// The whole command on a virtual wheel whose pedals rest at -32768 (the file
+// expects +32767): the file it writes, through the real loader and a fresh
+// InputSystem, reads the person's extremes as full lock / full pedal and the
+// rests as straight ahead / released.
+TEST_F(SetupDevices, CalibrateWritesAFileThatReadsThePersonsWheelRight) {
+  Person person;
+  Virtual wheel = attachWheel(Person::update, &person);
+  ASSERT_GE(wheel.id, 0) << SDL_GetError();
+  person.joystick = wheel.joystick;
+  std::FILE* out = std::tmpfile();
+  ASSERT_NE(out, nullptr);
+  MonitorOptions o = commandOptions(out);
+  o.seconds = 2.6;
+  o.calibrateOut = dir / "calibrated" / "wheel-calibrated.toml";
+  fs::create_directories(o.calibrateOut.parent_path());
+  ASSERT_EQ(runInputCalibration(o), 0);
+  person.done = true;
+  const std::string text = readAndClose(out);
+  SCOPED_TRACE(text);
+  EXPECT_NE(text.find("steering: axis 0, straight ahead at 120"), std::string::npos);
+  EXPECT_NE(text.find("throttle: axis 2, released at -32768, fully down at 32767 (pressed 1st)"), std::string::npos);
+  EXPECT_NE(text.find("brake: axis 3, released at -31000, fully down at 30000 (pressed 2nd)"), std::string::npos);
+  EXPECT_NE(text.find("wrote " + o.calibrateOut.string()), std::string::npos);
+
+  const DeviceMapping m = loadMappingFile(o.calibrateOut);
+  EXPECT_EQ(m.kind, DeviceKind::Wheel);
+  EXPECT_EQ(m.nameContains, std::vector<std::string>{"bdfcar-test wheel"});
+  EXPECT_FALSE(axisOf(m, Axis::Clutch).bound);  // the old file's axis 6 is not this wheel's
+
+  // The calibrated file alone drives the wheel.
+  writeFile(o.calibrateOut.parent_path(), "keyboard.toml", kKeyboard);
+  InputOptions io = options();
+  io.mappingDir = o.calibrateOut.parent_path();
+  InputSystem input(io);
+  const auto drive = [&](int steer, int throttle, int brake) {
+    SDL_JoystickSetVirtualAxis(wheel.joystick, 0, static_cast<Sint16>(steer));
+    SDL_JoystickSetVirtualAxis(wheel.joystick, 2, static_cast<Sint16>(throttle));
+    SDL_JoystickSetVirtualAxis(wheel.joystick, 3, static_cast<Sint16>(brake));
+    return input.poll(kDt);
+  };
+  Controls c = drive(120, -32768, -31000);
+  EXPECT_EQ(c.steering, 0.0);
+  EXPECT_EQ(c.throttle, 0.0);
+  EXPECT_EQ(c.brake, 0.0);
+  c = drive(-32768, 32767, 30000);
+  EXPECT_EQ(c.steering, 1.0);  // full left
+  EXPECT_EQ(c.throttle, 1.0);
+  EXPECT_EQ(c.brake, 1.0);
+  c = drive(32767, 0, -500);
+  EXPECT_EQ(c.steering, -1.0);  // full right
+  EXPECT_EQ(c.throttle, 32768.0 / 65535.0);
+  EXPECT_NEAR(c.brake, std::pow(0.5, 1.5), kTol);  // half-way, through the old file's brake curve
+}
+
+TEST_F(SetupDevices, CalibrateWithoutADeviceOrWithTooShortACaptureWritesNothing) {
+  std::FILE* out = std::tmpfile();
+  MonitorOptions o = commandOptions(out);
+  o.calibrateOut = dir / "never.toml";
+  o.seconds = 2.0;
+  EXPECT_EQ(runInputCalibration(o), 0);
+  EXPECT_NE(readAndClose(out).find("no wheel, joystick or game controller is connected: nothing to calibrate"),
+            std::string::npos);
+  ASSERT_GE(attachWheel().id, 0);
+  o.out = stdout;
+  o.seconds = 1.5;
+  EXPECT_EQ(runInputCalibration(o), 1);
+  o.seconds = 2.0;  // a wheel nobody touches: no steering
+  EXPECT_EQ(runInputCalibration(o), 1);
+  EXPECT_FALSE(fs::exists(o.calibrateOut));
 }
 
 // Every key the mapping loader knows (it lists them to refuse unknown ones)
