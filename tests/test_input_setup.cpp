@@ -1,7 +1,7 @@
 // Wheel and controller setup: `bdfcar input --calibrate` (the capture ->
 // mapping rules, the file it writes read back through the real loader, and
 // the whole command on a scripted SDL virtual wheel), pedals read from where
-// they rest, and speed-sensitive steering. Expected
+// they rest, the force-feedback test, and speed-sensitive steering. Expected
 // values are the numbers the tests write into their samples and files, worked
 // out by hand here, not through the library's functions.
 #include <SDL.h>
@@ -19,6 +19,7 @@
 #include "input/axis_response.h"
 #include "input/calibration.h"
 #include "input/driver_controls.h"
+#include "input/force_feedback.h"
 #include "input/input_system.h"
 #include "input/mapping.h"
 #include "input/monitor.h"
@@ -330,6 +331,34 @@ TEST(PedalRest, TheRestInsideTheTravelBecomesTheReleasedEnd) {
   EXPECT_EQ(moreReleased(plain, 100, 200), 100);
 }
 
+TEST(ForceFeedbackTest, PushesLeftThenRightGentlyEasedInAndOut) {
+  // Hand-computed points of the phases: 0.3 s in, 1 s held, 0.3 s out; left, then right.
+  EXPECT_EQ(forceFeedbackTestCommand(-0.01), 0.0);
+  EXPECT_EQ(forceFeedbackTestCommand(0.0), 0.0);
+  EXPECT_NEAR(forceFeedbackTestCommand(0.15), 0.125, kTol);
+  EXPECT_NEAR(forceFeedbackTestCommand(0.8), 0.25, kTol);
+  EXPECT_NEAR(forceFeedbackTestCommand(1.45), 0.125, kTol);
+  EXPECT_NEAR(forceFeedbackTestCommand(1.75), -0.125, kTol);
+  EXPECT_NEAR(forceFeedbackTestCommand(2.4), -0.25, kTol);
+  EXPECT_NEAR(forceFeedbackTestCommand(3.05), -0.125, kTol);
+  EXPECT_EQ(forceFeedbackTestCommand(3.2), 0.0);
+  EXPECT_EQ(forceFeedbackTestPhase(3.2), -1);
+  EXPECT_EQ(forceFeedbackTestPhase(0.5), 1);
+  // Tick by tick: never above a quarter, never a jump above the ramp's step, left before right.
+  double previous = 0.0, firstPush = 0.0;
+  for (int i = 0; i <= 400; ++i) {
+    const double c = forceFeedbackTestCommand(i * 0.01);
+    EXPECT_LE(std::abs(c), 0.25 + kTol);
+    EXPECT_LE(std::abs(c - previous), 0.25 / 0.3 * 0.01 + 1e-9) << i;
+    if (firstPush == 0.0) firstPush = c;
+    previous = c;
+  }
+  EXPECT_GT(firstPush, 0.0);
+  EXPECT_EQ(previous, 0.0);
+  // Through the shipped wheel's gain (0.6): at most 15 % of the device's full force.
+  EXPECT_EQ(forceFeedbackLevel(shippedLikeWheel().forceFeedback, kForceFeedbackTestCommand), 4915);  // 0.15 * 32767
+}
+
 // 72 km/h = 20 m/s, scale 0.4: the factor falls from 1 to 0.4 over 0..20 m/s.
 TEST(SpeedSensitiveSteering, FollowsTheStatedLineAndIsOffByDefault) {
   const DeviceMapping keyboard = parseMapping(kKeyboard, "keyboard.toml");
@@ -522,6 +551,26 @@ TEST_F(SetupDevices, CalibrateWithoutADeviceOrWithTooShortACaptureWritesNothing)
   o.seconds = 2.0;  // a wheel nobody touches: no steering
   EXPECT_EQ(runInputCalibration(o), 1);
   EXPECT_FALSE(fs::exists(o.calibrateOut));
+}
+
+TEST_F(SetupDevices, ForceFeedbackTestSaysWhyThereIsNone) {
+  const auto run = [&](const fs::path& mappings) {
+    std::FILE* out = std::tmpfile();
+    MonitorOptions o = commandOptions(out);
+    o.mappingDir = mappings;
+    EXPECT_EQ(runForceFeedbackTest(o), 0);
+    return readAndClose(out);
+  };
+  EXPECT_NE(run(dir).find("no wheel, joystick or game controller is connected: no force feedback to test"),
+            std::string::npos);
+  ASSERT_GE(attachWheel().id, 0);
+  // The file turns it on; a virtual device has no motor.
+  EXPECT_NE(run(dir).find("'bdfcar-test wheel' has no force feedback here: SDL offers it no constant-force effect"),
+            std::string::npos);
+  const fs::path off = dir / "off";
+  fs::create_directories(off);
+  writeFile(off, "wheel.toml", "[device]\ntype = \"wheel\"\n[axes.steering]\naxis = 0\n");
+  EXPECT_NE(run(off).find("its mapping wheel.toml does not turn force feedback on"), std::string::npos);
 }
 
 // Every key the mapping loader knows (it lists them to refuse unknown ones)

@@ -1,6 +1,7 @@
 // `bdfcar input`: lists the input devices and shows live raw axis / button
 // values and the mapped controls in the terminal, for calibrating mapping
-// files; `--calibrate` writes one from a capture.
+// files; `--calibrate` writes one from a capture, `--ffb-test` pushes the
+// wheel gently left and right.
 #pragma once
 
 #include <cstdio>
@@ -44,5 +45,11 @@ int runInputMonitor(const MonitorOptions& options);
 // device unplugged), 5 (the file could not be written) or 130 (Ctrl-C: nothing
 // written).
 int runInputCalibration(const MonitorOptions& options);
+
+// `--ffb-test`: the force-feedback test's pushes (force_feedback.h) on the
+// driving device through its mapping's gain and invert, each phase printed
+// as it begins. Returns 0 (done; or no device, or none with force feedback
+// opened: says which and why), 1 (bad mapping folder or SDL failure) or 130 (Ctrl-C).
+int runForceFeedbackTest(const MonitorOptions& options);
 
 }  // namespace bdfcar::input
