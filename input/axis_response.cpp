@@ -26,4 +26,28 @@ double axisResponse(const AxisMapping& m, Axis control, int raw) {
   return sign * std::min(1.0, m.gain * magnitude);
 }
 
+namespace {
+
+// The raw value at which a pedal reads fully down.
+int pressedEnd(const AxisMapping& p) { return p.invert ? p.rawMin : p.rawMax; }
+
+}  // namespace
+
+// rawMin is released unless the pedal is inverted (x -> 1 - x).
+int releasedEnd(const AxisMapping& p) { return p.invert ? p.rawMax : p.rawMin; }
+
+// Further towards the released end than the pressed end lies.
+int moreReleased(const AxisMapping& p, int a, int b) {
+  return releasedEnd(p) < pressedEnd(p) ? std::min(a, b) : std::max(a, b);
+}
+
+// The released end moved to a rest strictly inside the travel.
+AxisMapping pedalFromRest(const AxisMapping& p, int rest) {
+  const int lo = std::min(releasedEnd(p), pressedEnd(p)), hi = std::max(releasedEnd(p), pressedEnd(p));
+  if (rest <= lo || rest >= hi) return p;
+  AxisMapping moved = p;
+  (p.invert ? moved.rawMax : moved.rawMin) = rest;
+  return moved;
+}
+
 }  // namespace bdfcar::input

@@ -162,12 +162,22 @@ bool anyHeld(const State& s, const std::vector<int>& keys) {
   return std::any_of(keys.begin(), keys.end(), [&](int k) { return s.keyHeld[k]; });
 }
 
-// Analog controls read from a device through its mapping.
-void readDevice(const OpenDevice& d, Controls& c) {
+// Analog controls read from a device through its mapping. A pedal reads
+// released at and beyond the most released value it has shown (its still
+// reading at open, at first), and a pedal axis the device lacks reads released.
+void readDevice(OpenDevice& d, Controls& c) {
   double value[kAxisCount] = {};
   for (int i = 0; i < kAxisCount; ++i) {
     const AxisMapping& a = d.mapping->axes[i];
-    if (a.bound) value[i] = axisResponse(a, static_cast<Axis>(i), rawAxis(d, a.axis));
+    if (!a.bound || !hasAxis(d, a.axis)) continue;
+    const int raw = rawAxis(d, a.axis);
+    const Axis control = static_cast<Axis>(i);
+    if (control == Axis::Steering) {
+      value[i] = axisResponse(a, control, raw);
+    } else {
+      d.pedalRest[i] = moreReleased(a, d.pedalRest[i], raw);
+      value[i] = axisResponse(pedalFromRest(a, d.pedalRest[i]), control, raw);
+    }
   }
   c.steering = value[static_cast<int>(Axis::Steering)];
   const AxisMapping& steer = d.mapping->axes[static_cast<int>(Axis::Steering)];
@@ -177,6 +187,7 @@ void readDevice(const OpenDevice& d, Controls& c) {
   c.clutch = value[static_cast<int>(Axis::Clutch)];
   c.hasClutch = d.mapping->axes[static_cast<int>(Axis::Clutch)].bound;
   c.handbrake = value[static_cast<int>(Axis::Handbrake)];
+  c.speedSensitive = d.mapping->speedSensitive;
   c.source = d.kind;
 }
 
@@ -217,7 +228,7 @@ Controls InputSystem::poll(double dt) {
   const KeyboardHeld held{anyHeld(s, keys.steerLeft), anyHeld(s, keys.steerRight), anyHeld(s, keys.throttle),
                           anyHeld(s, keys.brake), anyHeld(s, keys.clutch), anyHeld(s, keys.handbrake)};
   s.keyboardAnalog = rampKeyboard(s.keyboard.ramps, held, s.keyboardAnalog, dt);
-  if (const OpenDevice* d = findDevice(s, s.activeId)) {
+  if (OpenDevice* d = findDevice(s, s.activeId)) {
     readDevice(*d, c);
   } else {
     c.steering = s.keyboardAnalog.steering;
@@ -226,6 +237,7 @@ Controls InputSystem::poll(double dt) {
     c.clutch = s.keyboardAnalog.clutch;
     c.hasClutch = !keys.clutch.empty();
     c.handbrake = s.keyboardAnalog.handbrake;
+    c.speedSensitive = s.keyboard.speedSensitive;
     c.source = DeviceKind::Keyboard;
   }
   s.last = c;

@@ -131,6 +131,16 @@ void readForceFeedback(Table& root, DeviceMapping& m) {
   m.forceFeedback.invert = ff->boolean("invert", false);
 }
 
+// [speed_sensitive_steering]: present means on.
+void readSpeedSensitiveSteering(Table& root, DeviceMapping& m) {
+  std::optional<Table> t = root.optionalTable("speed_sensitive_steering");
+  if (!t) return;
+  t->rejectUnknownKeys({"speed", "scale"});
+  // Up to 200 m/s (720 km/h): more is a typo; the scale must leave some steering.
+  m.speedSensitive.speed = t->number("speed", config::Dimension::Speed, Range{0.0, 200.0, true, false});
+  m.speedSensitive.scale = t->numberIn("scale", Range{0.0, 1.0, true, false});
+}
+
 // [keys] and [ramps] of the keyboard.
 void readKeyboard(Table& root, DeviceMapping& m) {
   if (std::optional<Table> keys = root.optionalTable("keys")) {
@@ -168,13 +178,14 @@ DeviceMapping readMapping(Table root, const std::string& fileName) {
   m.file = fileName;
   readDevice(root, m);
   if (m.kind == DeviceKind::Keyboard) {
-    root.rejectUnknownKeys({"device", "keys", "ramps", "actions"});
+    root.rejectUnknownKeys({"device", "keys", "ramps", "actions", "speed_sensitive_steering"});
     readKeyboard(root, m);
   } else {
-    root.rejectUnknownKeys({"device", "axes", "actions", "force_feedback"});
+    root.rejectUnknownKeys({"device", "axes", "actions", "force_feedback", "speed_sensitive_steering"});
     readAxes(root, m);
     readForceFeedback(root, m);
   }
+  readSpeedSensitiveSteering(root, m);
   readActions(root, m);
   return m;
 }

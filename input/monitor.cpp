@@ -1,17 +1,16 @@
 // `bdfcar input`: device list and live raw values for calibrating mapping files.
 #include "input/monitor.h"
 
-#include <SDL.h>
-
 #include <cmath>
 #include <string>
 
 #include "input/input_system.h"
+#include "input_command.h"
 
 namespace bdfcar::input {
 namespace {
 
-constexpr double kTick = 0.01;  // s, the simulator's input rate
+constexpr double kTick = kCommandTick;
 
 // "[1 -2 3]" of a list of integers.
 std::string listText(const std::vector<int>& values) {
@@ -65,12 +64,6 @@ void printLive(std::FILE* out, double t, const std::vector<DeviceStatus>& device
   std::fflush(out);
 }
 
-// Whether Ctrl-C (SDL turns SIGINT into SDL_QUIT) asked to stop.
-bool quitRequested() {
-  SDL_Event e;
-  return SDL_PeepEvents(&e, 1, SDL_GETEVENT, SDL_QUIT, SDL_QUIT) > 0;
-}
-
 }  // namespace
 
 // Lists devices, then polls every 10 ms and prints at the chosen interval.
@@ -82,26 +75,18 @@ int runInputMonitor(const MonitorOptions& o) {
                  kTick, kMaxMonitorSeconds);
     return 1;
   }
-  InputOptions io;
-  io.mappingDir = o.mappingDir;
-  io.deviceFilter = o.deviceFilter;
-  try {
-    InputSystem input(io);
+  return withDevices(o, [&](InputSystem& input) {
     printDevices(o.out, input.devices(), o);
     if (o.listOnly) return 0;
     if (input.devices().empty()) {
-      // Live values of nothing would be the keyboard's zeros for ever.
-      std::fprintf(o.out,
-                   "no wheel, joystick or game controller is connected: no live values to show (plug one in, or "
-                   "check that this user may read /dev/input; the keyboard drives through `bdfcar drive`)\n");
+      sayNoDevice(o.out, "no live values to show");  // the keyboard's zeros for ever would say nothing
       return 0;
     }
     const long ticks = o.seconds > 0.0 ? std::lround(o.seconds / kTick) : -1;  // -1: until Ctrl-C
     const long printEvery = std::max(1L, std::lround(o.printInterval / kTick));
     Controls seen;
     for (long i = 1; ticks < 0 || i <= ticks; ++i) {
-      SDL_Delay(static_cast<Uint32>(kTick * 1000));
-      const Controls c = input.poll(kTick);
+      const Controls c = waitTick(input);
       accumulateActions(c, seen);
       if (i % printEvery == 0 || i == ticks) {
         printLive(o.out, i * kTick, input.devices(), c, seen);
@@ -110,10 +95,7 @@ int runInputMonitor(const MonitorOptions& o) {
       if (quitRequested()) break;
     }
     return 0;
-  } catch (const std::exception& e) {  // MappingError carries file:line; SDL failures say which call
-    std::fprintf(stderr, "bdfcar input: %s\n", e.what());
-    return 1;
-  }
+  });
 }
 
 }  // namespace bdfcar::input

@@ -36,6 +36,12 @@ OpenResult openDevice(int index, const std::vector<DeviceMapping>& mappings) {
   }
   d.id = SDL_JoystickInstanceID(d.joystick);
   d.haptic = openHaptic(d.joystick, d.mapping->forceFeedback);
+  // A device's axes read 0 until SDL first updates it: the still reading comes after one update.
+  SDL_JoystickUpdate();
+  for (int i = 0; i < kAxisCount; ++i) {
+    const AxisMapping& a = d.mapping->axes[i];
+    if (static_cast<Axis>(i) != Axis::Steering && a.bound && hasAxis(d, a.axis)) d.pedalRest[i] = rawAxis(d, a.axis);
+  }
   r.device = std::move(d);
   return r;
 }
@@ -55,12 +61,16 @@ int rawAxis(const OpenDevice& d, int axis) {
   return SDL_JoystickGetAxis(d.joystick, axis);
 }
 
+// The controller API knows its axes by name; a joystick numbers them from 0.
+bool hasAxis(const OpenDevice& d, int axis) {
+  if (d.controller) return SDL_GameControllerHasAxis(d.controller, static_cast<SDL_GameControllerAxis>(axis));
+  return axis >= 0 && axis < SDL_JoystickNumAxes(d.joystick);
+}
+
 // Steering bound to an axis that exists (a button box fitting a generic file cannot drive).
 bool canDrive(const OpenDevice& d) {
   const AxisMapping& steering = d.mapping->axes[static_cast<int>(Axis::Steering)];
-  if (!steering.bound) return false;
-  if (d.controller) return SDL_GameControllerHasAxis(d.controller, static_cast<SDL_GameControllerAxis>(steering.axis));
-  return steering.axis < SDL_JoystickNumAxes(d.joystick);
+  return steering.bound && hasAxis(d, steering.axis);
 }
 
 // All raw axis values.

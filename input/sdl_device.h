@@ -4,6 +4,7 @@
 
 #include <SDL.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct OpenDevice {
   std::string name;
   int order = 0;                             // connection order, breaks ties between equal devices
   Haptic haptic;
+  // Per control (Axis), pedals only: the most released raw reading of its axis
+  // since the device was opened, starting from the still reading at open, at
+  // and beyond which the pedal reads released (axis_response.h, pedalFromRest).
+  std::array<int, kAxisCount> pedalRest{};
 };
 
 // Result of trying to open a device: `device.id < 0` when it was not opened, with the reason.
@@ -41,6 +46,9 @@ void closeDevice(OpenDevice& device);
 
 // Raw value of one axis (joystick index or controller axis, per the mapping's kind).
 int rawAxis(const OpenDevice& device, int axis);
+
+// Whether the device has that axis (SDL reads a missing one as 0, mid-range).
+bool hasAxis(const OpenDevice& device, int axis);
 
 // Whether the device can drive: its mapping binds steering to an axis it has.
 bool canDrive(const OpenDevice& device);

@@ -24,6 +24,18 @@ int controllerButton(std::string_view name) {
   return button == SDL_CONTROLLER_BUTTON_INVALID ? -1 : static_cast<int>(button);
 }
 
+// SDL_GameControllerAxis -> its name.
+std::string controllerAxisName(int axis) {
+  const char* name = SDL_GameControllerGetStringForAxis(static_cast<SDL_GameControllerAxis>(axis));
+  return name ? name : "";
+}
+
+// SDL_GameControllerButton -> its name.
+std::string controllerButtonName(int button) {
+  const char* name = SDL_GameControllerGetStringForButton(static_cast<SDL_GameControllerButton>(button));
+  return name ? name : "";
+}
+
 // SDL reports triggers in 0..32767.
 bool isControllerTrigger(int axis) {
   return axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT || axis == SDL_CONTROLLER_AXIS_TRIGGERRIGHT;

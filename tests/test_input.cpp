@@ -10,11 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "input/axis_response.h"
 #include "input/driver_controls.h"
@@ -22,14 +19,12 @@
 #include "input/input_system.h"
 #include "input/mapping.h"
 #include "input/monitor.h"
+#include "input_virtual.h"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace bdfcar::input;
-
-constexpr double kDt = 0.01;  // s, one tick
-constexpr double kTol = 1e-12;
+using namespace bdfcar::test_input;
 
 // Mapping files of the tests. The numbers here are the ones the expected
 // values below are computed from.
@@ -140,51 +135,6 @@ double padThrottle(int raw) { return std::sqrt(raw / 32767.0); }
 // Brake of kGamepadToml: trigger 0..32767, gain 2, clamped at 1.
 double padBrake(int raw) { return std::min(1.0, 2.0 * raw / 32767.0); }
 
-// A per-test folder for mapping files.
-fs::path freshDir(const std::string& tag) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() /
-                 ("bdfcar_test_input_" + tag + "_" + info->name() + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// Writes a file and returns its path.
-fs::path writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
-  std::ofstream(dir / name) << text;
-  return dir / name;
-}
-
-// A virtual device held open by the test to move its axes and buttons.
-struct Virtual {
-  SDL_JoystickID id = -1;
-  SDL_Joystick* joystick = nullptr;
-};
-
-// Attaches a virtual device of an SDL joystick type with the given counts.
-Virtual attach(SDL_JoystickType type, const char* name, int axes, int buttons) {
-  SDL_VirtualJoystickDesc desc{};
-  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-  desc.type = static_cast<Uint16>(type);
-  desc.naxes = static_cast<Uint16>(axes);
-  desc.nbuttons = static_cast<Uint16>(buttons);
-  desc.name = name;
-  const int index = SDL_JoystickAttachVirtualEx(&desc);
-  Virtual v;
-  if (index < 0) return v;
-  v.joystick = SDL_JoystickOpen(index);
-  v.id = SDL_JoystickInstanceID(v.joystick);
-  return v;
-}
-
-// Current device index of a device (indices shift as devices come and go).
-int deviceIndex(SDL_JoystickID id) {
-  for (int i = 0; i < SDL_NumJoysticks(); ++i)
-    if (SDL_JoystickGetDeviceInstanceID(i) == id) return i;
-  return -1;
-}
-
 // Unplugs a virtual device.
 void detach(Virtual& v) {
   SDL_JoystickClose(v.joystick);
@@ -204,25 +154,19 @@ void pushKey(SDL_Scancode code, bool down, bool repeat = false) {
 }
 
 // SDL headless, the test's mapping files, and only the test's virtual devices.
-class InputDevices : public ::testing::Test {
+class InputDevices : public VirtualDevicesTest {
  protected:
   void SetUp() override {
-    setenv("SDL_VIDEODRIVER", "dummy", 1);
-    ASSERT_EQ(SDL_Init(SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER), 0) << SDL_GetError();
-    dir = freshDir("devices");
+    VirtualDevicesTest::SetUp();
     writeFile(dir, "keyboard.toml", kKeyboardToml);
     writeFile(dir, "wheel.toml", kWheelToml);
     writeFile(dir, "gamepad.toml", kGamepadToml);
-  }
-  void TearDown() override {
-    SDL_Quit();  // also detaches the virtual devices
-    fs::remove_all(dir);
   }
   // Options that ignore any real device on the machine.
   InputOptions options() {
     InputOptions o;
     o.mappingDir = dir;
-    o.deviceFilter = "bdfcar-test";
+    o.deviceFilter = kVirtualPrefix;
     o.onMessage = [this](const std::string& m) { messages.push_back(m); };
     return o;
   }
@@ -237,13 +181,15 @@ class InputDevices : public ::testing::Test {
                   SDL_CONTROLLER_BUTTON_MAX);
   }
 
-  fs::path dir;
   std::vector<std::string> messages;
 };
 
 TEST_F(InputDevices, WheelAxesMapThroughCalibrationDeadzoneCurveAndGain) {
   Virtual wheel = attachWheel();
   ASSERT_GE(wheel.id, 0) << SDL_GetError();
+  // Pedals released when the wheel is opened, as the file expects them (their still reading).
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 32767);
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 2, -32768);
   InputSystem input(options());
   for (int raw : {-32768, -30000, -12345, -3001, -2999, 0, 1500, 3001, 17000, 29999, 32767}) {
     SCOPED_TRACE(raw);
@@ -268,6 +214,9 @@ TEST_F(InputDevices, GameControllerAxesMapAsTheFileSays) {
   ASSERT_GE(pad.id, 0) << SDL_GetError();
   SDL_GameController* view = SDL_GameControllerOpen(deviceIndex(pad.id));  // to read what SDL reports
   ASSERT_NE(view, nullptr) << SDL_GetError();
+  // Triggers released when the pad is opened (a virtual axis at 0 reads half-way on a trigger).
+  SDL_JoystickSetVirtualAxis(pad.joystick, SDL_CONTROLLER_AXIS_TRIGGERRIGHT, -32768);
+  SDL_JoystickSetVirtualAxis(pad.joystick, SDL_CONTROLLER_AXIS_TRIGGERLEFT, -32768);
   InputSystem input(options());
   for (int raw : {-32768, -20000, -6553, -6000, 0, 6000, 6554, 25000, 32767}) {
     SCOPED_TRACE(raw);
@@ -340,12 +289,14 @@ TEST_F(InputDevices, DevicePluggedInMidDriveIsPickedUp) {
 
 TEST_F(InputDevices, UnpluggedWheelFallsBackToTheKeyboardWithAMessage) {
   Virtual wheel = attachWheel();
+  SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 32767);  // the throttle released when opened
   InputSystem input(options());
   SDL_JoystickSetVirtualAxis(wheel.joystick, 0, -24000);
   SDL_JoystickSetVirtualAxis(wheel.joystick, 1, 10000);
   const Controls before = input.poll(kDt);
   ASSERT_EQ(before.source, DeviceKind::Wheel);
   ASSERT_GT(before.steering, 0.5);
+  ASSERT_NEAR(before.throttle, wheelThrottle(10000), kTol);
 
   detach(wheel);
   // The keyboard (no key held) takes over from the wheel's last values and
@@ -434,15 +385,12 @@ TEST_F(InputDevices, MonitorListsDevicesAndShowsLiveValues) {
   ASSERT_NE(out, nullptr);
   MonitorOptions o;
   o.mappingDir = dir;
-  o.deviceFilter = "bdfcar-test";
+  o.deviceFilter = kVirtualPrefix;
   o.seconds = 0.03;
   o.printInterval = 0.01;
   o.out = out;
   EXPECT_EQ(runInputMonitor(o), 0);
-  std::rewind(out);
-  std::string text;
-  for (int ch; (ch = std::fgetc(out)) != EOF;) text += static_cast<char>(ch);
-  std::fclose(out);
+  const std::string text = readAndClose(out);
   EXPECT_NE(text.find("'bdfcar-test wheel'  wheel  mapping wheel.toml  4 axes"), std::string::npos) << text;
   EXPECT_NE(text.find("axes [-15000 0 0 0]"), std::string::npos) << text;
   char steering[32];
@@ -495,6 +443,15 @@ TEST(InputMapping, BadFilesNameFileLineKeyAndExpectation) {
        "(0, 1000]"},
       {"keyboard_name.toml", "[device]\ntype = \"keyboard\"\nname_contains = [\"x\"]\n", 3, "device.name_contains",
        "one of: type"},
+      {"speed_scale_zero.toml",
+       "[device]\ntype = \"wheel\"\n[speed_sensitive_steering]\nspeed = \"80 km/h\"\nscale = 0\n", 5,
+       "speed_sensitive_steering.scale", "(0, 1], got 0"},
+      {"speed_negative.toml",
+       "[device]\ntype = \"keyboard\"\n[speed_sensitive_steering]\nspeed = \"-10 km/h\"\nscale = 0.5\n", 4,
+       "speed_sensitive_steering.speed", "(0, 200]"},
+      {"speed_unknown.toml",
+       "[device]\ntype = \"joystick\"\n[speed_sensitive_steering]\nspeed = 20\nscale = 0.5\nmin_scale = 0.2\n", 6,
+       "speed_sensitive_steering.min_scale", "one of: speed, scale"},
   };
   for (const BadFile& bad : cases) {
     SCOPED_TRACE(bad.name);
@@ -614,12 +571,12 @@ TEST(DriverControls, AWheelsRotationSteersTheCarsWheelByItsOwnAngle) {
   c.source = DeviceKind::Wheel;
   c.steering = 0.2;
   c.steeringWheelAngle = 0.2 * 450 * deg;
-  EXPECT_NEAR(toDriverInput(c, full).steer, 90.0 / 210.0, 1e-12);
+  EXPECT_NEAR(toDriverInput(c, full, 0.0).steer, 90.0 / 210.0, 1e-12);
   c.steering = -0.8;
   c.steeringWheelAngle = -0.8 * 450 * deg;
-  EXPECT_EQ(toDriverInput(c, full).steer, -1.0);  // 360 degrees: past the car's lock
+  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -1.0);  // 360 degrees: past the car's lock
   c.steeringWheelAngle = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(toDriverInput(c, full).steer, -0.8);
+  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -0.8);
 }
 
 // A clutch pedal is a device's clutch axis; the keyboard's clutch key is not
@@ -631,14 +588,14 @@ TEST(DriverControls, PedalsGearsAndHandbrakeReachTheSimulation) {
   c.clutch = 1.0;
   c.handbrake = 0.7;
   c.gearUp = c.gearDown = true;
-  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0);
+  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0, 0.0);
   EXPECT_FALSE(in.clutchPedal);
   EXPECT_EQ(in.clutch, 1.0);
   EXPECT_EQ(in.handbrake, 0.7);
   EXPECT_EQ(in.shift, 1);
   c.source = DeviceKind::Wheel;
   c.gearUp = false;
-  in = toDriverInput(c, 1.0);
+  in = toDriverInput(c, 1.0, 0.0);
   EXPECT_TRUE(in.clutchPedal);
   EXPECT_EQ(in.shift, -1);
 }

@@ -79,7 +79,9 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
     }
     if (out.quit) return out;
     if ((!paused_ || step) && !session_.failed() && !session_.finished())
-      session_.tick(input::toDriverInput(c, session_.simulation().vehicle().spec.steering.steeringWheelFull));
+      // The speed the HUD shows (the last sample's) for speed-sensitive steering.
+      session_.tick(input::toDriverInput(c, session_.simulation().vehicle().spec.steering.steeringWheelFull,
+                                         session_.lastSample().speed));
   } else if ((!paused_ || step) && !session_.failed() && !session_.finished()) {
     advance();
   }

@@ -15,6 +15,15 @@ enum class DeviceKind { Keyboard, Wheel, GameController, Joystick };
 enum class Axis { Steering, Throttle, Brake, Clutch, Handbrake };
 inline constexpr int kAxisCount = 5;
 
+// Speed-sensitive steering (a mapping file's [speed_sensitive_steering]): the
+// steering input is scaled by 1 at a standstill, falling linearly with the
+// car's speed to `scale` at `speed` and held there above it. Off (speed 0,
+// the default): the input is left exactly as it is.
+struct SpeedSensitiveSteering {
+  double speed = 0.0;  // m/s at which the scale reaches `scale`; 0: off
+  double scale = 1.0;  // (0, 1]: the fraction of the input kept at and above `speed`
+};
+
 // Edge-triggered commands: true in the one tick in which the button went down.
 enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit, Rewind };
 inline constexpr int kActionCount = 10;
@@ -30,6 +39,9 @@ struct Controls {
   double clutch = 0.0;    // [0, 1], 1 = pedal down (disengaged); 0 unless hasClutch
   bool hasClutch = false; // the active device's mapping binds a clutch
   double handbrake = 0.0; // [0, 1], 1 = pulled fully
+  // The active device's (or keyboard's) mapping's speed-sensitive steering,
+  // applied by toDriverInput (driver_controls.h), which knows the car's speed.
+  SpeedSensitiveSteering speedSensitive;
 
   // Edge-triggered, from every connected device and the keyboard together.
   bool gearUp = false;

@@ -72,6 +72,9 @@ struct DeviceMapping {
   KeyboardKeys keys;
   KeyboardRamps ramps;
 
+  // Any device, the keyboard included: off unless the file has the table.
+  SpeedSensitiveSteering speedSensitive;
+
   // Per Action: button indices (joystick, wheel), SDL game-controller button
   // numbers, or key scancodes (keyboard).
   std::array<std::vector<int>, kActionCount> actions{};
@@ -79,6 +82,12 @@ struct DeviceMapping {
 
 // Parses one mapping file's text; fileName is used in error messages only.
 DeviceMapping parseMapping(const std::string& text, const std::string& fileName);
+
+// A device's mapping (wheel, game controller, joystick; not the keyboard's
+// keys and ramps) as mapping-file text that parseMapping reads back to the same
+// values: `comment` (lines) first as # comments, then [device], the bound
+// [axes.*], [speed_sensitive_steering], [actions] and [force_feedback].
+std::string mappingToml(const DeviceMapping& mapping, const std::vector<std::string>& comment);
 
 // Reads and parses one mapping file.
 DeviceMapping loadMappingFile(const std::filesystem::path& path);
