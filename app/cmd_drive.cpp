@@ -101,7 +101,7 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
   CLI::App* cmd = app.add_subcommand("drive", "Drive a scenario in a window with a wheel, controller, joystick or keyboard");
   auto a = std::make_shared<DriveArgs>();
   cmd->add_option("scenario", a->scenario,
-                  "Scenario file (default: the drivable sedan at a standstill, the ISO course ahead on the flat road; with --replay, the recording's)")
+                  "Scenario file (default: the drivable sedan at a standstill on the proving ground's circuit; with --replay, the recording's)")
       ->check(CLI::ExistingFile)
       ->each([a](const std::string&) { a->scenarioGiven = true; });
   cmd->add_option("--record", a->record, "Record the inputs of every tick to this file");
