@@ -201,6 +201,29 @@ TEST(Render, SuspensionViewsDrawTheChassisFrame) {
   EXPECT_GT(translucent, 100);
 }
 
+// Reverse lights: unlit pure white (nothing else the chase camera sees behind
+// the car is that white), lit in reverse gear only, and only on a car with a
+// gearbox (a car without one reports gear 0).
+TEST(Render, ReverseLightsLightInReverseGear) {
+  auto white = [](const std::uint8_t* p) { return p[0] > 250 && p[1] > 250 && p[2] > 250; };
+  Scene scene(testScene(false));
+  Renderer r(scene, 960, 540);
+  auto whitePixels = [&](bool powertrain, int gear) {
+    SyntheticFrame s = syntheticLaneChange(laneChange(), 1.0);
+    s.hud.powertrain = powertrain;
+    s.hud.gear = gear;
+    scene.update(s.view, s.hud);
+    return countPixels(r.render(), 0.3, 0.7, 0.35, 0.95, white);
+  };
+  whitePixels(true, 1);  // the chase camera's first frame swings it from the start pose: settle it
+  const int first = whitePixels(true, 1), reverse = whitePixels(true, -1), neutral = whitePixels(true, 0);
+  const int noGearbox = whitePixels(false, -1), firstAgain = whitePixels(true, 1);
+  EXPECT_GT(reverse, first + 40);
+  EXPECT_EQ(neutral, first);
+  EXPECT_EQ(noGearbox, first);
+  EXPECT_EQ(firstAgain, first);  // and out again
+}
+
 // The HUD's g-g diagram: a dot of pure yellow (255, 214, 26), in the bottom
 // left, at the acceleration seen from above with the car pointing up, its
 // 1 g ring a tenth of the frame's height in radius: 0.5 g of braking

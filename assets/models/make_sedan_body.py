@@ -8,7 +8,8 @@ wheel centres at x = 1.21 (track 2.2 m) and x = -1.25 (track 1.9 m), about
 cross-sections from nose to tail; wheel arches are cut by raising the lower
 edge of the sections around each axle. Materials (usemtl) name what the
 renderer colours: paint (the vehicle's colour), glass, trim, headlight,
-taillight, plate, chrome. Run: python3 make_sedan_body.py > sedan_body.obj
+taillight (lit by the brake), reverselight (lit in reverse gear), plate,
+chrome. Run: python3 make_sedan_body.py > sedan_body.obj
 """
 import math
 
@@ -156,6 +157,8 @@ def main():
         box(obj, "headlight", (xf - 0.02, y0, -0.07), (xf + 0.012, y1, 0.02))
         y0, y1 = sorted((s * 0.44, s * 0.74))
         box(obj, "taillight", (xr - 0.012, y0, 0.13), (xr + 0.02, y1, 0.25))
+        y0, y1 = sorted((s * 0.31, s * 0.43))  # inboard of the tail light, in the same cluster
+        box(obj, "reverselight", (xr - 0.012, y0, 0.15), (xr + 0.02, y1, 0.23))
         y0, y1 = sorted((s * 0.96, s * 1.08))
         box(obj, "trim", (0.74, y0, 0.40), (0.86, y1, 0.50))
     box(obj, "trim", (xf - 0.02, -0.30, -0.20), (xf + 0.012, 0.30, -0.09))
