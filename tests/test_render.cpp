@@ -201,6 +201,22 @@ TEST(Render, SuspensionViewsDrawTheChassisFrame) {
   EXPECT_GT(translucent, 100);
 }
 
+// Solid body, camera above the bonnet looking down at it from the front
+// left: the front struts' top mounts (docs/reference-vehicle.md) sit under the
+// bonnet, so none of their yellow shows; with the body hidden they do. (With
+// the bonnet 5 cm lower, as it was, their tops showed through it.)
+TEST(Render, TheSolidBonnetCoversTheStrutTops) {
+  auto strut = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 110 && p[2] < 90; };
+  Scene scene(testScene(false));
+  scene.setCamera(CameraMode::Orbit);
+  const OrbitState o;
+  scene.orbitBy(0.6 - o.yaw, 0.8 - o.pitch, 5.0 / o.distance);  // 0.6 rad left of the nose, 0.8 rad up, 5 m
+  const auto [solid, hidden, translucent] = pixelsPerBodyDisplay(scene, strut);
+  EXPECT_EQ(solid, 0);
+  EXPECT_GT(hidden, 100);
+  EXPECT_GT(translucent, 50);
+}
+
 // Reverse lights: unlit pure white (nothing else the chase camera sees behind
 // the car is that white), lit in reverse gear only, and only on a car with a
 // gearbox (a car without one reports gear 0).
