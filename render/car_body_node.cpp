@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "render/car_nodes.h"
 #include "render/obj_mesh.h"
@@ -23,22 +24,23 @@ osg::Vec4 materialColour(const std::string& name, const osg::Vec4& paint) {
   if (name == "trim") return rgba(0.07, 0.07, 0.08);
   if (name == "chrome") return rgba(0.72, 0.73, 0.76);
   if (name == "headlight") return rgba(1.0, 0.97, 0.86);
-  if (name == "taillight") return rgba(0.78, 0.04, 0.04);
   if (name == "plate") return rgba(0.92, 0.92, 0.86);
   return rgba(0.55, 0.55, 0.55);
 }
 
-// Tail lights unlit (they glow, whatever the sun): dark red, bright when braking.
-const osg::Vec4 kTailLightOff = rgba(0.42, 0.03, 0.03), kTailLightOn = rgba(1.0, 0.12, 0.08);
+// The lamps' colours, off and on (unlit: what is drawn).
+Lamp brakeLamp() { return Lamp{nullptr, rgba(0.42, 0.03, 0.03), rgba(1.0, 0.12, 0.08), false}; }
+Lamp reverseLamp() { return Lamp{nullptr, rgba(0.55, 0.56, 0.58), rgba(1.0, 1.0, 1.0), false}; }
 
 // Geode of all OBJ parts, flat-shaded unless the file gives normals; the
-// tail lights ("taillight") in a drawable of their own (lights).
-osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& paint, osg::ref_ptr<osg::Geometry>& lights) {
-  TriangleBuilder body, tail;
+// lamps' parts ("taillight", "reverselight") each in a drawable of their own.
+osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& paint, BodyNode& out) {
+  TriangleBuilder body, tail, reverse;
   for (const ObjPart& part : mesh.parts) {
-    const bool isLight = part.material == "taillight";
-    TriangleBuilder& tb = isLight ? tail : body;
-    const osg::Vec4 colour = isLight ? kTailLightOff : materialColour(part.material, paint);
+    const bool isTail = part.material == "taillight", isReverse = part.material == "reverselight";
+    TriangleBuilder& tb = isTail ? tail : isReverse ? reverse : body;
+    const osg::Vec4 colour = isTail ? out.brakeLights.off : isReverse ? out.reverseLights.off
+                                                                      : materialColour(part.material, paint);
     for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3) {
       const osg::Vec3 a(part.corners[i].x(), part.corners[i].y(), part.corners[i].z());
       const osg::Vec3 b(part.corners[i + 1].x(), part.corners[i + 1].y(), part.corners[i + 1].z());
@@ -55,10 +57,11 @@ osg::ref_ptr<osg::Geode> geodeFromObj(const ObjMesh& mesh, const osg::Vec4& pain
   }
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
   geode->addDrawable(body.build());
-  if (!tail.v->empty()) {
-    lights = tail.build();
-    lights->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-    geode->addDrawable(lights.get());
+  for (auto [tb, lamp] : {std::pair{&tail, &out.brakeLights}, std::pair{&reverse, &out.reverseLights}}) {
+    if (tb->v->empty()) continue;
+    lamp->geometry = tb->build();
+    lamp->geometry->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    geode->addDrawable(lamp->geometry.get());
   }
   return geode;
 }
@@ -175,13 +178,15 @@ BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::strin
   const osg::Vec4 paint = rgba(geometry.bodyColour.x(), geometry.bodyColour.y(), geometry.bodyColour.z());
   BodyNode body;
   body.node = new osg::Group;
+  body.brakeLights = brakeLamp();
+  body.reverseLights = reverseLamp();
   osg::ref_ptr<osg::Geode> geode;
   const std::string path = resolveAssetPath(geometry.bodyMesh, assetRoot);
   if (!geometry.bodyMesh.empty() && path.empty()) {
     body.warning = "body mesh '" + geometry.bodyMesh + "' not found: drawing a box";
   } else if (!path.empty()) {
     try {
-      geode = geodeFromObj(loadObj(path), paint, body.tailLights);
+      geode = geodeFromObj(loadObj(path), paint, body);
       body.source = path;
     } catch (const std::exception& e) {
       body.warning = std::string(e.what()) + ": drawing a box";
@@ -201,11 +206,11 @@ BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::strin
   return body;
 }
 
-void setBrakeLights(BodyNode& body, bool on) {
-  if (!body.tailLights || body.brakeLightsOn == on) return;
-  body.brakeLightsOn = on;
-  auto* colours = static_cast<osg::Vec4Array*>(body.tailLights->getColorArray());
-  for (osg::Vec4& c : *colours) c = on ? kTailLightOn : kTailLightOff;
+void setLamp(Lamp& lamp, bool on) {
+  if (!lamp.geometry || lamp.lit == on) return;
+  lamp.lit = on;
+  auto* colours = static_cast<osg::Vec4Array*>(lamp.geometry->getColorArray());
+  for (osg::Vec4& c : *colours) c = on ? lamp.on : lamp.off;
   colours->dirty();
 }
 

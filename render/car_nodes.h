@@ -14,14 +14,22 @@
 
 namespace bdfcar::render {
 
+// Lamps of the body mesh (a material of their own): one drawable, unlit (they
+// glow whatever the sun), in one of two colours.
+struct Lamp {
+  osg::ref_ptr<osg::Geometry> geometry;  // none if the mesh has no such part (the box has none)
+  osg::Vec4 off, on;
+  bool lit = false;
+};
+
 struct BodyNode {
   osg::ref_ptr<osg::Group> node;                     // in the chassis frame
   osg::ref_ptr<osg::StateSet> solid, translucent;    // swapped by applyBodyDisplay
   std::string source;                                // file the mesh came from, or "box"
   std::string warning;                               // why the box fallback is drawn, if it is
-  osg::ref_ptr<osg::Geometry> tailLights;            // the mesh's "taillight" parts (none on the box)
+  Lamp brakeLights;                                  // the mesh's "taillight" parts: dark red, bright when braking
+  Lamp reverseLights;                                // its "reverselight" parts: grey glass, white in reverse gear
   osg::ref_ptr<osg::Node> frame;                     // the chassis as lines (suspension views), a sibling of node
-  bool brakeLightsOn = false;
 };
 
 // First existing file among: path as given, under assetRoot, under the source tree; "" if none.
@@ -31,8 +39,8 @@ std::string resolveAssetPath(const std::string& path, const std::string& assetRo
 // or a two-box body of geometry's size when the file is missing or unreadable.
 BodyNode makeBodyNode(const vehicle::VehicleGeometry& geometry, const std::string& assetRoot);
 
-// Brake lights on (the tail lights bright) or off.
-void setBrakeLights(BodyNode& body, bool on);
+// Lights a lamp (brake lights, reverse lights) or puts it out.
+void setLamp(Lamp& lamp, bool on);
 
 // Solid, see-through (the links inside show) or hidden body.
 void applyBodyDisplay(BodyNode& body, BodyDisplay display);

@@ -74,12 +74,14 @@ HudNode::HudNode() : camera_(new osg::Camera) {
   figures_ = makeText(osgText::Text::LEFT_TOP);
   course_ = makeText(osgText::Text::RIGHT_TOP);
   message_ = makeText(osgText::Text::CENTER_BOTTOM);
+  gg_ = std::make_unique<GgDiagram>(font_.get());
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
   geode->addDrawable(panels_.get());
   geode->addDrawable(figures_.get());
   geode->addDrawable(course_.get());
   geode->addDrawable(message_.get());
   camera_->addChild(geode);
+  camera_->addChild(gg_->node());  // after the panels: drawn over its own
   layout(1280, 720);
 }
 
@@ -117,6 +119,7 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
                   hud.handbrake > 0.05 ? " HB" : "");
   }
   setIfChanged(*figures_, fig);
+  gg_->update(hud.time, hud.longitudinalAcceleration, hud.lateralAcceleration);
   const int figureLines = hud.powertrain ? kFigureLines + 1 : kFigureLines;
   if (figureLines != figureLines_) {
     figureLines_ = figureLines;
@@ -175,6 +178,12 @@ void HudNode::layout(int width, int height) {
     const float half = std::min(0.48f * width, 0.5f * charWidth * float(message_->getText().size()) + pad);
     addRect(*v, width / 2.0f - half, margin, width / 2.0f + half, margin + 2 * pad + lineHeight);
   }
+  // The g-g diagram bottom left, above the message line's band (a long verdict
+  // reaches that far): its 1 g ring a tenth of the height across in radius.
+  const float ggRadius = 0.1f * height, ggHalf = GgDiagram::kClampG * ggRadius + pad;
+  const float ggLeft = margin, ggBottom = 2 * margin + 2 * pad + lineHeight;
+  addRect(*v, ggLeft, ggBottom, ggLeft + 2 * ggHalf, ggBottom + 2 * ggHalf);
+  gg_->layout(ggLeft + ggHalf, ggBottom + ggHalf, ggRadius, 0.7f * size);
   panels_->setVertexArray(v.get());
   static_cast<osg::DrawArrays*>(panels_->getPrimitiveSet(0))->setCount(static_cast<GLsizei>(v->size()));
   panels_->dirtyBound();

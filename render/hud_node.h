@@ -1,14 +1,16 @@
 // Private to render/: the heads-up display as an orthographic OSG camera
 // drawn after the scene: driving figures top left, course and camera top right,
-// the message line at the bottom.
+// the g-g diagram bottom left, the message line at the bottom.
 #pragma once
 
 #include <osg/Camera>
 #include <osg/Geometry>
 #include <osgText/Text>
 
+#include <memory>
 #include <string>
 
+#include "render/gg_diagram.h"
 #include "render/scene.h"
 #include "vehicle/vehicle_view.h"
 
@@ -32,6 +34,7 @@ class HudNode {
   bool unicode_ = false;  // the font has degree and superscript signs
   osg::ref_ptr<osgText::Text> figures_, course_, message_;
   osg::ref_ptr<osg::Geometry> panels_;
+  std::unique_ptr<GgDiagram> gg_;  // built once the font is loaded
   int width_ = 0, height_ = 0;
   bool showMessage_ = false;
   int courseLines_ = 2;

@@ -96,7 +96,9 @@ void Scene::Impl::update(const vehicle::VehicleView& view, const vehicle::HudInf
   }
   lastHud = info;
   // A brake lamp switch: any brake pedal travel (the handbrake lights nothing).
-  setBrakeLights(body, info.brake > 0.02);
+  setLamp(body.brakeLights, info.brake > 0.02);
+  // The reverse lamp switch sits on the gearbox: lit in reverse gear, whatever the car's motion.
+  setLamp(body.reverseLights, info.powertrain && info.gear < 0);
   hud.update(info, cameraMode, display);
 }
 

@@ -4,8 +4,8 @@
 // "offscreen" video driver. DISPLAY is unset: no display server is used.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -199,6 +199,94 @@ TEST(Render, SuspensionViewsDrawTheChassisFrame) {
   EXPECT_EQ(solid, 0);
   EXPECT_GT(hidden, 200);
   EXPECT_GT(translucent, 100);
+}
+
+// Solid body, camera above the bonnet looking down at it from the front
+// left: the front struts' top mounts (docs/reference-vehicle.md) sit under the
+// bonnet, so none of their yellow shows; with the body hidden they do. (With
+// the bonnet 5 cm lower, as it was, their tops showed through it.)
+TEST(Render, TheSolidBonnetCoversTheStrutTops) {
+  auto strut = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 110 && p[2] < 90; };
+  Scene scene(testScene(false));
+  scene.setCamera(CameraMode::Orbit);
+  const OrbitState o;
+  scene.orbitBy(0.6 - o.yaw, 0.8 - o.pitch, 5.0 / o.distance);  // 0.6 rad left of the nose, 0.8 rad up, 5 m
+  const auto [solid, hidden, translucent] = pixelsPerBodyDisplay(scene, strut);
+  EXPECT_EQ(solid, 0);
+  EXPECT_GT(hidden, 100);
+  EXPECT_GT(translucent, 50);
+}
+
+// Reverse lights: unlit pure white (nothing else the chase camera sees behind
+// the car is that white), lit in reverse gear only, and only on a car with a
+// gearbox (a car without one reports gear 0).
+TEST(Render, ReverseLightsLightInReverseGear) {
+  auto white = [](const std::uint8_t* p) { return p[0] > 250 && p[1] > 250 && p[2] > 250; };
+  Scene scene(testScene(false));
+  Renderer r(scene, 960, 540);
+  auto whitePixels = [&](bool powertrain, int gear) {
+    SyntheticFrame s = syntheticLaneChange(laneChange(), 1.0);
+    s.hud.powertrain = powertrain;
+    s.hud.gear = gear;
+    scene.update(s.view, s.hud);
+    return countPixels(r.render(), 0.3, 0.7, 0.35, 0.95, white);
+  };
+  whitePixels(true, 1);  // the chase camera's first frame swings it from the start pose: settle it
+  const int first = whitePixels(true, 1), reverse = whitePixels(true, -1), neutral = whitePixels(true, 0);
+  const int noGearbox = whitePixels(false, -1), firstAgain = whitePixels(true, 1);
+  EXPECT_GT(reverse, first + 40);
+  EXPECT_EQ(neutral, first);
+  EXPECT_EQ(noGearbox, first);
+  EXPECT_EQ(firstAgain, first);  // and out again
+}
+
+// The HUD's g-g diagram: a dot of pure yellow (255, 214, 26), in the bottom
+// left, at the acceleration seen from above with the car pointing up, its
+// 1 g ring a tenth of the frame's height in radius: 0.5 g of braking
+// (a_x < 0) moves it down by 0.05 of the height, 0.5 g to the left (a left
+// turn, a_y > 0, docs/TELEMETRY.md) left by as much; it stops at 1.2 g.
+TEST(Render, GgDotSitsAtTheAccelerationSeenFromAbove) {
+  auto yellow = [](const std::uint8_t* p) {
+    return std::abs(p[0] - 255) < 12 && std::abs(p[1] - 214) < 12 && std::abs(p[2] - 26) < 12;
+  };
+  constexpr double g = 9.80665;
+  Scene scene(testScene());
+  Renderer r(scene, 960, 540);
+  // Centre of the dot's pixels in the bottom left quarter (x right, y down, pixels).
+  auto dot = [&](double ax, double ay) {
+    SyntheticFrame s = syntheticLaneChange(laneChange(), 1.0);  // one time: no trail
+    s.hud.longitudinalAcceleration = ax;
+    s.hud.lateralAcceleration = ay;
+    scene.update(s.view, s.hud);
+    const Frame f = r.render();
+    double sx = 0, sy = 0;
+    int n = 0;
+    for (int y = f.height / 2; y < f.height; ++y)
+      for (int x = 0; x < f.width / 2; ++x)
+        if (yellow(f.pixel(x, y))) {
+          sx += x + 0.5;
+          sy += y + 0.5;
+          ++n;
+        }
+    EXPECT_GT(n, 20) << ax << ", " << ay;
+    return Eigen::Vector2d(sx / std::max(n, 1), sy / std::max(n, 1));
+  };
+  const double ring = 0.1 * 540;  // pixels per g
+  const Eigen::Vector2d centre = dot(0, 0);
+  EXPECT_LT(centre.x(), 0.2 * 960);
+  EXPECT_GT(centre.y(), 0.6 * 540);
+  const struct {
+    double ax, ay;        // m/s^2
+    Eigen::Vector2d move;  // pixels, x right, y down
+  } cases[] = {{-0.5 * g, 0.0, {0.0, 0.5 * ring}},                // braking: down
+               {0.0, 0.5 * g, {-0.5 * ring, 0.0}},                // turning left: left
+               {0.3 * g, -0.4 * g, {0.4 * ring, -0.3 * ring}},    // accelerating out of a right turn
+               {-2.0 * g, 0.0, {0.0, 1.2 * ring}}};               // beyond the panel: held at 1.2 g
+  for (const auto& c : cases) {
+    const Eigen::Vector2d moved = dot(c.ax, c.ay) - centre;
+    EXPECT_NEAR(moved.x(), c.move.x(), 1.0) << c.ax << ", " << c.ay;
+    EXPECT_NEAR(moved.y(), c.move.y(), 1.0) << c.ax << ", " << c.ay;
+  }
 }
 
 TEST(Render, FullHdFrameAt1280x720) {

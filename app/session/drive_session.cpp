@@ -84,6 +84,7 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   h.speed = sample_.speed;
   h.steeringWheelAngle = sim_->vehicle().spec.steering.steeringWheelFull * sim_->steerAt(sample_.t);
   h.lateralAcceleration = sample_.ay;
+  h.longitudinalAcceleration = sample_.ax;
   h.yawRate = sample_.yawRate;
   h.realTimeFactor = realTimeFactor;
   h.stepTime = stepSeconds;

@@ -57,7 +57,8 @@ struct HudInfo {
   double time = 0.0;                // s
   double speed = 0.0;               // m/s (the HUD shows km/h)
   double steeringWheelAngle = 0.0;  // rad (the HUD shows degrees)
-  double lateralAcceleration = 0.0; // m/s^2
+  double lateralAcceleration = 0.0; // m/s^2, COM along chassis y, + left (telemetry ay_mps2)
+  double longitudinalAcceleration = 0.0;  // m/s^2, COM along chassis x, + forward (ax_mps2)
   double yawRate = 0.0;             // rad/s
   double realTimeFactor = 0.0;      // simulated / wall time
   // What that ratio measures: "RTF" a live drive's (paced at 1, over the
