@@ -86,6 +86,8 @@ void GgDiagram::layout(float cx, float cy, float radius, float textSize) {
   line({0, -kClampG}, {0, kClampG}, 0.3f);
   setVertices(*grid_, v.get(), c.get());
   label_->setCharacterSize(textSize);
+  const unsigned fontPixels = static_cast<unsigned>(std::lround(textSize));  // one texel per pixel
+  label_->setFontResolution(fontPixels, fontPixels);
   label_->setPosition(osg::Vec3(cx + 0.72f * radius, cy + 0.72f * radius, 0));
   redraw();
 }

@@ -3,6 +3,7 @@
 #include <osg/BlendFunc>
 #include <osg/Geode>
 #include <osgText/Font>
+#include <osgText/Glyph>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,21 @@ osg::ref_ptr<osgText::Font> loadFont(bool& unicode) {
   }
   unicode = false;
   return osgText::Font::getDefaultFont();
+}
+
+// osgText gives its glyph textures trilinear filtering with 16x anisotropy.
+// Software GL (llvmpipe) pays for every one of those samples: a sixth of the
+// whole frame at 1280x720 went to the HUD's few hundred glyphs. The HUD draws
+// glyphs near their rasterised size (layout() matches the font resolution to
+// the character size), so one bilinear sample per pixel looks the same.
+// Textures are added as glyphs are first used: called after every setText.
+void useBilinearGlyphs(osgText::Font& font) {
+  for (const osg::ref_ptr<osgText::GlyphTexture>& texture : font.getGlyphTextureList()) {
+    // Only on change: each setter dirties the texture's parameters.
+    if (texture->getFilter(osg::Texture::MIN_FILTER) != osg::Texture::LINEAR)
+      texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    if (texture->getMaxAnisotropy() != 1.0f) texture->setMaxAnisotropy(1.0f);
+  }
 }
 
 // printf into a std::string.
@@ -154,6 +170,7 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
     width_ = 0;  // force the panels to be rebuilt
     layout(w, h);
   }
+  useBilinearGlyphs(*font_);
 }
 
 // Character size follows the window height so the HUD reads the same at any size.
@@ -164,7 +181,12 @@ void HudNode::layout(int width, int height) {
   camera_->setProjectionMatrix(osg::Matrix::ortho2D(0, width, 0, height));
   const float size = std::clamp(height / 34.0f, 10.0f, 26.0f), margin = 0.6f * size, pad = 0.4f * size;
   const float lineHeight = size * 1.18f, charWidth = size * 0.6f;
-  for (osgText::Text* t : {figures_.get(), course_.get(), message_.get()}) t->setCharacterSize(size);
+  // Glyphs rasterised at the size they are drawn: sampled one texel per pixel.
+  const unsigned fontPixels = static_cast<unsigned>(std::lround(size));
+  for (osgText::Text* t : {figures_.get(), course_.get(), message_.get()}) {
+    t->setCharacterSize(size);
+    t->setFontResolution(fontPixels, fontPixels);
+  }
   figures_->setPosition(osg::Vec3(margin + pad, height - margin - pad, 0));
   course_->setPosition(osg::Vec3(width - margin - pad, height - margin - pad, 0));
   message_->setPosition(osg::Vec3(width / 2.0f, margin + pad, 0));
@@ -184,6 +206,7 @@ void HudNode::layout(int width, int height) {
   const float ggLeft = margin, ggBottom = 2 * margin + 2 * pad + lineHeight;
   addRect(*v, ggLeft, ggBottom, ggLeft + 2 * ggHalf, ggBottom + 2 * ggHalf);
   gg_->layout(ggLeft + ggHalf, ggBottom + ggHalf, ggRadius, 0.7f * size);
+  useBilinearGlyphs(*font_);  // glyphs at a new resolution may open a new texture
   panels_->setVertexArray(v.get());
   static_cast<osg::DrawArrays*>(panels_->getPrimitiveSet(0))->setCount(static_cast<GLsizei>(v->size()));
   panels_->dirtyBound();

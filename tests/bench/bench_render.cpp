@@ -1,14 +1,22 @@
 // bench_render: headless (OSMesa) frame time of the synthetic lane change at
 // 1280x720, render and PNG encode measured separately; medians over N frames.
 // Not a test (no assertion on time): run it and read the numbers.
-//   bench_render [frames=100] [width=1280] [height=720] [pngLevel=1]
+//   bench_render [frames=100] [width=1280] [height=720] [pngLevel=1, -1: no PNG]
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#endif
 
 #include "render/headless.h"
 #include "render/png_writer.h"
@@ -48,15 +56,20 @@ int main(int argc, char** argv) {
       scene.update(f.view, f.hud);
       const render::Frame& frame = renderer.render();
       const auto t1 = Clock::now();
-      render::writePng(png, frame, level);
+      if (level >= 0) render::writePng(png, frame, level);
       const auto t2 = Clock::now();
+      if (i == -1) CALLGRIND_START_INSTRUMENTATION;  // under callgrind --instr-atstart=no: the measured frames only
       if (i < 0) continue;
       renderMs.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
       pngMs.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
     }
+    CALLGRIND_STOP_INSTRUMENTATION;
     report("render (update+draw)", renderMs);
-    report("PNG encode + write", pngMs);
-    std::filesystem::remove(png);
+    if (level >= 0) {
+      report("PNG encode + write", pngMs);
+      std::printf("last PNG %ju bytes\n", static_cast<std::uintmax_t>(std::filesystem::file_size(png)));
+      std::filesystem::remove(png);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_render: %s\n", e.what());
     return 1;
