@@ -5,6 +5,8 @@
 #include <csignal>
 #include <cstdlib>
 
+#include "render/encoder_priority.h"
+
 namespace bdfcar::render {
 namespace {
 
@@ -24,10 +26,13 @@ VideoPipe::VideoPipe(const std::string& path, int width, int height, const Video
   if (std::system(probe.c_str()) != 0)
     throw RenderError("VideoPipe: '" + options.ffmpeg + "' not found on PATH (install ffmpeg to write " + path + ")");
   // yuv420p needs even sizes: pad odd ones by a pixel rather than fail.
-  const std::string cmd = shellQuote(options.ffmpeg) + " -y -loglevel error -f rawvideo -pix_fmt rgba -s " +
-                          std::to_string(width) + "x" + std::to_string(height) + " -r " + std::to_string(options.fps) +
-                          " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset veryfast -crf " +
-                          std::to_string(options.crf) + " -pix_fmt yuv420p " + shellQuote(path);
+  // Under nice: the renderer first (render/encoder_priority.h).
+  const std::string cmd = "nice -n " + std::to_string(kEncoderNiceness) + " " + shellQuote(options.ffmpeg) +
+                          " -y -loglevel error -f rawvideo -pix_fmt rgba -s " + std::to_string(width) + "x" +
+                          std::to_string(height) + " -r " + std::to_string(options.fps) +
+                          " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset " +
+                          shellQuote(options.preset) + " -crf " + std::to_string(options.crf) + " -pix_fmt yuv420p " +
+                          shellQuote(path);
   // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   pipe_ = popen(cmd.c_str(), "w");

@@ -11,6 +11,10 @@ namespace bdfcar::render {
 struct VideoOptions {
   double fps = 50.0;
   int crf = 20;                       // x264 quality (lower = better, larger)
+  // x264's fastest preset: on a 2-core machine "veryfast" took a core from
+  // the software rasteriser (12 s against 8.6 s for the 361-frame lane change
+  // at 1280x720) for files half the size at the same crf.
+  std::string preset = "ultrafast";
   std::string ffmpeg = "ffmpeg";      // executable, looked up on PATH
 };
 

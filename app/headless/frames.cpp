@@ -90,6 +90,7 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   }
   if (video) video->close();
   r.encodeSeconds += seconds(Clock::now() - t1);
+  r.wallSeconds = seconds(Clock::now() - wall0);
   return r;
 }
 

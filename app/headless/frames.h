@@ -23,6 +23,7 @@ struct FramesResult {
   int width = 0, height = 0;
   LoopStats stats;           // render time per frame (frame()), physics per tick (tick())
   double encodeSeconds = 0;  // the render loop waiting for PNG / video output
+  double wallSeconds = 0;    // the whole run, first frame to the last file closed
   Percentiles pngEncode;     // encoding + writing one PNG (worker thread, overlaps rendering)
   std::string renderer;      // GL_RENDERER
 };
