@@ -8,6 +8,7 @@
 
 #include "render/nodes.h"
 #include "render/osg_convert.h"
+#include "render/terrain_lod.h"
 #include "render/textures.h"
 
 namespace bdfcar::render {
@@ -117,7 +118,7 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
     };
     addSubdivided(pick, corner(t[0]), corner(t[1]), corner(t[2]), look.colour);
   }
-  osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+  osg::ref_ptr<osg::Group> tiles = new osg::Group;
   const int bins[3] = {kBinGround, kBinAsphalt, kBinRoadPaint};
   const float offsets[3] = {0.0f, -2.0f, -4.0f};
   // One state per (texture, layer), shared by its tiles.
@@ -132,11 +133,9 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
       if (layer != 0) ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
       ss->setRenderBinDetails(bins[layer], "RenderBin");
     }
-    osg::ref_ptr<osg::Geometry> g = tb.build();
-    g->setStateSet(ss.get());
-    geode->addDrawable(g.get());
+    tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat));
   }
-  return geode;
+  return tiles;
 }
 
 }  // namespace bdfcar::render

@@ -35,14 +35,19 @@ void TriangleBuilder::quad(const osg::Vec3& a, const osg::Vec3& b, const osg::Ve
 
 // Geometry with per-vertex normals and colours drawn as GL_TRIANGLES.
 osg::ref_ptr<osg::Geometry> TriangleBuilder::build() {
+  return meshGeometry(v.get(), n.get(), c.get(), uv.get(), new osg::DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v->size())));
+}
+
+osg::ref_ptr<osg::Geometry> meshGeometry(osg::Vec3Array* v, osg::Vec3Array* n, osg::Vec4Array* c, osg::Vec2Array* uv,
+                                         osg::PrimitiveSet* primitives) {
   osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
   g->setUseDisplayList(false);
   g->setUseVertexBufferObjects(true);
-  g->setVertexArray(v.get());
-  g->setNormalArray(n.get(), osg::Array::BIND_PER_VERTEX);
-  g->setColorArray(c.get(), osg::Array::BIND_PER_VERTEX);
-  if (uv) g->setTexCoordArray(0, uv.get(), osg::Array::BIND_PER_VERTEX);
-  g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v->size())));
+  g->setVertexArray(v);
+  g->setNormalArray(n, osg::Array::BIND_PER_VERTEX);
+  g->setColorArray(c, osg::Array::BIND_PER_VERTEX);
+  if (uv) g->setTexCoordArray(0, uv, osg::Array::BIND_PER_VERTEX);
+  g->addPrimitiveSet(primitives);
   return g;
 }
 

@@ -21,6 +21,11 @@ inline osg::Vec4 rgba(double r, double g, double b, double a = 1.0) { return osg
 // Model matrix of a body pose (OSG multiplies row vectors: rotate, then translate).
 osg::Matrixd poseMatrix(const vehicle::BodyPose& pose);
 
+// Static geometry in buffer objects with per-vertex normals, colours and
+// (if uv is given) texture coordinates, drawn as `primitives`.
+osg::ref_ptr<osg::Geometry> meshGeometry(osg::Vec3Array* v, osg::Vec3Array* n, osg::Vec4Array* c, osg::Vec2Array* uv,
+                                         osg::PrimitiveSet* primitives);
+
 // Accumulates coloured, optionally textured triangles into one osg::Geometry.
 struct TriangleBuilder {
   TriangleBuilder();

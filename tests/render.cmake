@@ -25,3 +25,7 @@ target_compile_definitions(test_render_window PRIVATE BDFCAR_TEST_WINDOW=1)
 add_executable(bench_render bench/bench_render.cpp)
 target_link_libraries(bench_render PRIVATE bdfcar_render_headless bdfcar_render_synthetic bdfcar_warnings)
 bdfcar_check_osmesa_first(bench_render)
+
+# The ground's levels of detail: geometry only, no GL context.
+bdfcar_test(test_terrain_lod test_terrain_lod.cpp)
+target_link_libraries(test_terrain_lod PRIVATE bdfcar_render_scene)

@@ -1,0 +1,168 @@
+// The ground's levels of detail (render/terrain_lod): welding changes no
+// corner, clustering keeps a surface where it was and the area it covers,
+// and a dense tile gets coarser levels farther out. No GL context needed.
+#include <gtest/gtest.h>
+
+#include <osg/Geode>
+#include <osg/LOD>
+
+#include <cmath>
+#include <set>
+#include <tuple>
+
+#include "render/terrain_lod.h"
+
+using namespace bdfcar::render;
+
+namespace {
+
+constexpr float kRepeat = 5.0f;  // m per texture repeat, as the ground's
+
+// z of a gently rolling test surface.
+float heightAt(float x, float y) { return 0.05f * std::sin(1.3f * x) * std::cos(0.7f * y); }
+
+// A grid of n x n cells of side h from (x0, y0), two triangles a cell, corners
+// with the surface's height, an up normal and world-xy texture coordinates,
+// written one corner per triangle as the ground's builder writes them.
+TriangleBuilder grid(int n, float h, float x0 = 0, float y0 = 0, bool flat = false) {
+  TriangleBuilder tb;
+  tb.enableTexcoords();
+  auto corner = [&](int i, int j) {
+    const float x = x0 + i * h, y = y0 + j * h;
+    const osg::Vec3 p(x, y, flat ? 0.0f : heightAt(x, y));
+    tb.vertex(p, osg::Vec3(0, 0, 1), osg::Vec4(1, 1, 1, 1), osg::Vec2(x / kRepeat, y / kRepeat));
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      corner(i, j), corner(i + 1, j), corner(i + 1, j + 1);
+      corner(i, j), corner(i + 1, j + 1), corner(i, j + 1);
+    }
+  return tb;
+}
+
+const osg::Vec3Array& vertices(const osg::Geometry& g) { return *static_cast<const osg::Vec3Array*>(g.getVertexArray()); }
+const osg::DrawElementsUInt& indices(const osg::Geometry& g) {
+  return *static_cast<const osg::DrawElementsUInt*>(g.getPrimitiveSet(0));
+}
+
+// Area of the geometry's triangles projected on the xy plane (all face up here).
+double projectedArea(const osg::Geometry& g) {
+  const auto& v = vertices(g);
+  const auto& e = indices(g);
+  double area = 0;
+  for (std::size_t k = 0; k + 2 < e.size(); k += 3) {
+    const osg::Vec3 a = v[e[k]], b = v[e[k + 1]], c = v[e[k + 2]];
+    area += 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
+  }
+  return area;
+}
+
+}  // namespace
+
+// Welding draws the very corners it was given, each stored once: a grid of
+// n x n cells has (n + 1)^2 distinct corners.
+TEST(TerrainLod, WeldingKeepsEveryCornerAndStoresEachOnce) {
+  const int n = 40;
+  const TriangleBuilder tb = grid(n, 0.1f);
+  const osg::ref_ptr<osg::Geometry> g = weldTriangles(tb);
+  EXPECT_EQ(vertices(*g).size(), std::size_t((n + 1) * (n + 1)));
+  ASSERT_EQ(indices(*g).size(), tb.v->size());
+  const auto* uv = static_cast<const osg::Vec2Array*>(g->getTexCoordArray(0));
+  ASSERT_NE(uv, nullptr);
+  for (std::size_t k = 0; k < tb.v->size(); ++k) {
+    const unsigned m = indices(*g)[k];
+    EXPECT_EQ(vertices(*g)[m], (*tb.v)[k]) << "corner " << k;
+    EXPECT_EQ((*uv)[m], (*tb.uv)[k]) << "corner " << k;
+  }
+}
+
+// Corners that share a position but not a normal (a crease) stay apart.
+TEST(TerrainLod, WeldingKeepsCreasesApart) {
+  TriangleBuilder tb;
+  const osg::Vec4 white(1, 1, 1, 1);
+  tb.triangle(osg::Vec3(0, 0, 0), osg::Vec3(1, 0, 0), osg::Vec3(0, 1, 0), white);  // up
+  tb.triangle(osg::Vec3(0, 0, 0), osg::Vec3(0, 1, 0), osg::Vec3(0, 0, 1), white);  // facing -x
+  EXPECT_EQ(vertices(*weldTriangles(tb)).size(), 6u);
+}
+
+// Clustering a 0.1 m grid at 1 m: on a plane every merged vertex stays on it,
+// the covered area is the square's less at most a cell along its edges, the
+// triangles drop by about (1 / 0.1)^2, and texture coordinates follow the
+// merged positions in world xy.
+TEST(TerrainLod, ClusteringKeepsAPlaneAndItsArea) {
+  const int n = 100;
+  const float h = 0.1f, side = n * h, cell = 1.0f;
+  const TriangleBuilder tb = grid(n, h, 0.0f, 0.0f, /*flat=*/true);
+  const osg::ref_ptr<osg::Geometry> g = clusterTriangles(tb, cell, kRepeat);
+  const auto& v = vertices(*g);
+  for (const osg::Vec3& p : v) EXPECT_EQ(p.z(), 0.0f);
+  const double area = projectedArea(*g);
+  EXPECT_LE(area, side * side * (1 + 1e-6));
+  EXPECT_GE(area, (side - 2 * cell) * (side - 2 * cell));
+  const std::size_t before = tb.v->size() / 3, after = indices(*g).size() / 3;
+  EXPECT_LE(after, 4 * before / 100) << before << " -> " << after;  // about 2 (side / cell)^2 left
+  const auto* uv = static_cast<const osg::Vec2Array*>(g->getTexCoordArray(0));
+  ASSERT_NE(uv, nullptr);
+  for (std::size_t m = 0; m < v.size(); ++m) {
+    EXPECT_NEAR((*uv)[m].x(), v[m].x() / kRepeat, 1e-6);
+    EXPECT_NEAR((*uv)[m].y(), v[m].y() / kRepeat, 1e-6);
+  }
+}
+
+// On a rolling surface the merged vertices stay within the surface's own
+// height range over a cell of it (they are means of corners on it).
+TEST(TerrainLod, ClusteredVerticesStayOnTheSurfaceWithinItsVariationOverACell) {
+  const float cell = 0.5f;
+  const osg::ref_ptr<osg::Geometry> g = clusterTriangles(grid(60, 0.1f), cell, kRepeat);
+  // |dz/dx| <= 0.05 * 1.3, |dz/dy| <= 0.05 * 0.7: over a cell's diagonal at most
+  const double bound = 0.05 * (1.3 + 0.7) * cell;
+  for (const osg::Vec3& p : vertices(*g)) EXPECT_NEAR(p.z(), heightAt(p.x(), p.y()), bound);
+}
+
+// Clustering drops triangles that collapse and draws a repeated one once.
+TEST(TerrainLod, ClusteringLeavesNoCollapsedOrRepeatedTriangle) {
+  const osg::ref_ptr<osg::Geometry> g = clusterTriangles(grid(50, 0.1f), 1.0f, kRepeat);
+  const auto& e = indices(*g);
+  std::set<std::tuple<unsigned, unsigned, unsigned>> seen;
+  for (std::size_t k = 0; k + 2 < e.size(); k += 3) {
+    EXPECT_TRUE(e[k] != e[k + 1] && e[k + 1] != e[k + 2] && e[k] != e[k + 2]);
+    unsigned a = e[k], b = e[k + 1], c = e[k + 2];
+    while (a > b || a > c) std::tie(a, b, c) = std::make_tuple(b, c, a);  // rotate the smallest first
+    EXPECT_TRUE(seen.insert({a, b, c}).second);
+  }
+}
+
+// A sparse tile is one geode; a dense one (a 0.1 m grid 30 m square, 180,000
+// triangles) is cut into parts, each switching to coarser stand-ins farther
+// out: ranges that join up and reach infinity, fewer triangles at each step.
+TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
+  osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+  const osg::ref_ptr<osg::Node> sparse = groundTile(grid(20, 1.0f), state.get(), kRepeat);
+  EXPECT_NE(sparse->asGeode(), nullptr);
+
+  const osg::ref_ptr<osg::Node> dense = groundTile(grid(300, 0.1f), state.get(), kRepeat);
+  osg::Group* parts = dense->asGroup();
+  ASSERT_NE(parts, nullptr);
+  ASSERT_GT(parts->getNumChildren(), 1u);
+  std::size_t total = 0;
+  for (unsigned i = 0; i < parts->getNumChildren(); ++i) {
+    auto* lod = dynamic_cast<osg::LOD*>(parts->getChild(i));
+    ASSERT_NE(lod, nullptr);
+    ASSERT_GE(lod->getNumChildren(), 2u) << "part " << i;
+    EXPECT_EQ(lod->getMinRange(0), 0.0f);
+    EXPECT_EQ(lod->getMaxRange(lod->getNumChildren() - 1), std::numeric_limits<float>::max());
+    std::size_t previous = std::numeric_limits<std::size_t>::max();
+    for (unsigned k = 0; k < lod->getNumChildren(); ++k) {
+      if (k > 0) {
+        EXPECT_EQ(lod->getMinRange(k), lod->getMaxRange(k - 1));
+      }
+      const auto* geometry = lod->getChild(k)->asGeode()->getDrawable(0)->asGeometry();
+      EXPECT_EQ(geometry->getStateSet(), state.get());
+      const std::size_t triangles = indices(*geometry).size() / 3;
+      EXPECT_LT(triangles, previous) << "part " << i << " level " << k;
+      previous = triangles;
+      if (k == 0) total += triangles;
+    }
+  }
+  EXPECT_EQ(total, std::size_t(2 * 300 * 300));  // the parts' full levels together: every triangle once
+}
