@@ -176,3 +176,35 @@ TEST(DriveSession, APowertrainDriveWithShiftsReplaysBitForBit) {
   // The powertrain's columns are there.
   EXPECT_NE(readFile(csv).find("engine_rpm,gear,clutch"), std::string::npos);
 }
+
+// The HUD shows the course's lines from the moment the car enters it (the
+// judge's entry time), not before; after the exit gate the course time is the
+// judge's exit minus entry, and the verdict reads PASSED.
+TEST(DriveSession, TheHudShowsTheCourseFromItsEntry) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/iso_lane_change.toml"));
+  app::DriveSession d(spec, {});
+  bool sawBeforeEntry = false, sawInside = false;
+  while (!d.finished()) {
+    ASSERT_TRUE(d.tick(std::nullopt)) << d.failure();
+    const auto c = d.courseResult();
+    ASSERT_TRUE(c.has_value());
+    const vehicle::HudInfo h = d.hud(1.0, 0.0, "");
+    if (c->entryTime < 0) {
+      sawBeforeEntry = true;
+      EXPECT_EQ(h.coneHits, -1) << "t = " << d.time();
+      EXPECT_EQ(h.courseTime, -1.0) << "t = " << d.time();
+    } else {
+      sawInside = true;
+      EXPECT_EQ(h.coneHits, c->coneHits);
+      if (c->exitTime < 0) {
+        EXPECT_NEAR(h.courseTime, d.lastSample().t - c->entryTime, 1e-12);
+      }
+    }
+  }
+  EXPECT_TRUE(sawBeforeEntry && sawInside);
+  const auto c = d.courseResult();
+  ASSERT_TRUE(c.has_value() && c->exitTime >= 0);
+  const vehicle::HudInfo h = d.hud(1.0, 0.0, "");
+  EXPECT_EQ(h.courseTime, c->exitTime - c->entryTime);
+  EXPECT_EQ(h.verdict, "PASSED");
+}

@@ -104,9 +104,13 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
     h.handbrake = p.handbrake;
   }
   if (const auto c = run_->course()) {
-    h.coneHits = c->coneHits;
     h.knockedCones = c->knockedCones;
-    h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;
+    // Nothing to judge until the car enters the course or touches it: a free
+    // drive that never goes there shows no "cones hit 0, course 0.00 s".
+    if (c->entryTime >= 0 || c->coneHits > 0 || !c->passed) {
+      h.coneHits = c->coneHits;
+      h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;
+    }
     // A corner of the car outside the lanes fails the run at once; through
     // the exit gate with none, it passes.
     char why[96];
