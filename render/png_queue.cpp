@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "render/encoder_priority.h"
+#include "render/thread_priority.h"
 #include "render/png_writer.h"
 
 namespace bdfcar::render {
@@ -50,7 +50,7 @@ std::vector<double> PngQueue::encodeSeconds() const {
 
 // Worker loop: encode outside the lock so push() never waits for zlib.
 void PngQueue::run() {
-  lowerThisThreadsPriority();  // the renderer first (render/encoder_priority.h)
+  lowerThisThreadsPriority();  // the renderer first (render/thread_priority.h)
   std::unique_lock lock(mutex_);
   for (;;) {
     changed_.wait(lock, [&] { return !jobs_.empty() || stopping_; });

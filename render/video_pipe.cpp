@@ -5,7 +5,7 @@
 #include <csignal>
 #include <cstdlib>
 
-#include "render/encoder_priority.h"
+#include "render/thread_priority.h"
 
 namespace bdfcar::render {
 namespace {
@@ -26,8 +26,8 @@ VideoPipe::VideoPipe(const std::string& path, int width, int height, const Video
   if (std::system(probe.c_str()) != 0)
     throw RenderError("VideoPipe: '" + options.ffmpeg + "' not found on PATH (install ffmpeg to write " + path + ")");
   // yuv420p needs even sizes: pad odd ones by a pixel rather than fail.
-  // Under nice: the renderer first (render/encoder_priority.h).
-  const std::string cmd = "nice -n " + std::to_string(kEncoderNiceness) + " " + shellQuote(options.ffmpeg) +
+  // Under nice: the renderer first (render/thread_priority.h).
+  const std::string cmd = "nice -n " + std::to_string(kBackgroundNiceness) + " " + shellQuote(options.ffmpeg) +
                           " -y -loglevel error -f rawvideo -pix_fmt rgba -s " + std::to_string(width) + "x" +
                           std::to_string(height) + " -r " + std::to_string(options.fps) +
                           " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset " +

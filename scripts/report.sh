@@ -128,18 +128,37 @@ bench_table() {
   echo "## 7. Headless rendering (OSMesa, no display server)"
   echo
   echo "The ISO 3888-1 lane change at 1280x720, 30 frames per simulated second, chase camera; rendering"
-  echo "on the main thread, encoding beside it at a lower priority (render/encoder_priority.h): PNG on a"
+  echo "on the main thread, encoding beside it at a lower priority (render/thread_priority.h): PNG on a"
   echo "worker thread, or the video's ffmpeg (x264 ultrafast). Render is the draw of one frame; end to end"
   echo "is the whole run's wall time per frame, encoding paid for (on 2 cores the encoder bounds it)."
   echo "Commands: \`env -u DISPLAY build/app/bdfcar render assets/scenarios/iso_lane_change.toml --out frames\`"
   echo "(PNG frames), then the same with \`--no-frames --video run.mp4\` (video only)."
   echo
+  echo "$repeats runs of each; the line printed is each run's, the medians over the runs below them."
+  echo
   echo '```'
-  env -u DISPLAY -u WAYLAND_DISPLAY "$build/app/bdfcar-headless" render assets/scenarios/iso_lane_change.toml \
-    --out "$tmp/frames" --size 1280x720 2>&1 | tail -n 1
+  render_runs() {  # render_runs LABEL ARGS...: one line per run, then the medians
+    local label=$1 line runs=()
+    shift
+    for ((r = 0; r < repeats; ++r)); do
+      rm -rf "$tmp/frames"
+      line=$(env -u DISPLAY -u WAYLAND_DISPLAY "$build/app/bdfcar-headless" render \
+        assets/scenarios/iso_lane_change.toml --size 1280x720 "$@" 2>&1 | tail -n 1)
+      echo "$line"
+      runs+=("$line")
+    done
+    printf '%s\n' "${runs[@]}" | awk -v label="$label" '
+      { for (i = 1; i <= NF; ++i) {
+          if ($i == "p50" && $(i - 1) == "render") r[NR] = $(i + 1)
+          if ($i == "frame" && $(i + 1) == "end") e[NR] = $(i - 3) } }
+      function median(a, n,   i, j, t) {
+        for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+        return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2 }
+      END { printf "%s, median of %d runs: render p50 %.1f ms, %.1f ms a frame end to end\n", label, NR, median(r, NR), median(e, NR) }'
+  }
+  render_runs "PNG frames" --out "$tmp/frames"
   if command -v ffmpeg > /dev/null; then
-    env -u DISPLAY -u WAYLAND_DISPLAY "$build/app/bdfcar-headless" render assets/scenarios/iso_lane_change.toml \
-      --no-frames --video "$tmp/run.mp4" --size 1280x720 2>&1 | tail -n 1
+    render_runs "video only" --no-frames --video "$tmp/run.mp4"
   fi
   echo '```'
   echo

@@ -1,10 +1,8 @@
 #include "interactive/draw_thread.h"
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <chrono>
+
+#include "render/thread_priority.h"
 
 namespace bdfcar::app {
 
@@ -45,7 +43,9 @@ void DrawThread::command(const ViewCommands& c) {
 }
 
 void DrawThread::loop() {
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+  // The tick first: drawing may lag, it draws the latest state (render/thread_priority.h).
+  render::lowerThisThreadsPriority();
+  render::lowerSoftwareRasteriserPriority();
   while (running_) {
     vehicle::VehicleView view;
     vehicle::HudInfo hud;
