@@ -75,9 +75,16 @@ int runDrive(const DriveArgs& a) {
     const LoopStats stats = runInteractive(session, io);
     std::printf("%s\n", stats.summary().c_str());
   }
-  if (const auto c = session.courseResult())
-    std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course", c->coneHits,
-                c->coneHits == 1 ? "" : "s", c->exitTime >= 0 ? c->exitTime - c->entryTime : -1.0);
+  if (const auto c = session.courseResult()) {
+    if (c->entryTime < 0 && c->coneHits == 0 && c->passed)
+      std::printf("course: not entered\n");
+    else if (c->exitTime < 0)
+      std::printf("course: %s, %d cone%s hit, not completed\n", c->passed ? "clean" : "left the course", c->coneHits,
+                  c->coneHits == 1 ? "" : "s");
+    else
+      std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course",
+                  c->coneHits, c->coneHits == 1 ? "" : "s", c->exitTime - c->entryTime);
+  }
   if (session.resets() > 0)
     std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
                 session.resets() == 1 ? "" : "s", session.notice().c_str(), session.lastDivergence().c_str());
