@@ -1,6 +1,7 @@
 // `bdfcar info VEHICLE.toml`: bodies, joints, cut joints and the coordinate,
 // constraint and degree-of-freedom counts of a vehicle file; `bdfcar info
 // TERRAIN.toml`: what a terrain file builds (both check the file fully).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -12,7 +13,10 @@
 #include "multibody/model.h"
 #include "multibody/model_error.h"
 #include "terrain/terrain_file.h"
+#include "scenario/planar_rung.h"
+#include "scenario/rung_certificate.h"
 #include "scenario/scenario_spec.h"
+#include "vehicle/ladder.h"
 #include "vehicle/kinematic_model.h"
 #include "vehicle/planar_model.h"
 #include "vehicle/vehicle_sheet.h"
@@ -73,20 +77,39 @@ bool isTerrainFile(const std::string& path) {
   return (root.has("kind") || root.has("friction")) && !root.has("vehicle");
 }
 
-// A model derived from the linkage (kinematic or planar): its bodies, and
-// its figures with the check of the tables against the linkage.
-void printDerived(const vehicle::Vehicle& linkage, vehicle::Fidelity f) {
+// A model derived from the linkage (kinematic or planar): its bodies, its
+// figures with the check of the tables against the linkage, what the rung
+// models and leaves out (the ladder's list), and its error certificate
+// against the linkage at the driver's step (the scenario default's
+// integrator: 10 ms BDF2, 2 Newton iterations).
+void printDerived(const std::string& path, const std::vector<config::Setting>& settings,
+                  const vehicle::Vehicle& linkage, vehicle::Fidelity f) {
   std::string figures;
   vehicle::Vehicle derived;
+  scenario::ScenarioSpec scene;
+  scene.sourceFile = path;
+  scene.vehicleFile = path;
+  scene.vehicleSettings = settings;
+  const vehicle::PlanarDerivation p = scenario::derivePlanarRung(scene, linkage);
   if (f == vehicle::Fidelity::Planar) {
-    const vehicle::PlanarDerivation p = vehicle::derivePlanar(linkage);
     figures = vehicle::describePlanar(p) + vehicle::describeKinematic(p.kinematic);
     derived = p.vehicle;
   } else {
-    const vehicle::KinematicDerivation k = vehicle::deriveKinematic(linkage);
-    figures = vehicle::describeKinematic(k);
-    derived = k.vehicle;
+    figures = vehicle::describeKinematic(p.kinematic);
+    derived = p.kinematic.vehicle;
   }
+  const vehicle::RungDescription& rung = vehicle::describeRung(f);
+  figures += std::string("rung '") + rung.name + "': derived from " + rung.derivedFrom + "\n  models: " + rung.models +
+             "\n  leaves out: " + rung.omits + "\n  valid: " + rung.validity + "\n";
+  const scenario::LadderCertificate c = scenario::certifyLadder(scene, linkage, p);
+  figures += scenario::describeCertificate(c, scene.fidelity.errorBudget);
+  for (const auto& [name, bound] : linkage.spec.certificateRequired)
+    if (const scenario::RungCertificate* r = c.find(*vehicle::rungByName(name)))
+      figures += "the vehicle file requires " + name + " within " + std::to_string(100 * bound).substr(0, 5) +
+                 " %: " + (r->worst <= 100 * bound ? "kept" : "NOT kept") + "\n";
+  for (const std::string& why : scenario::chooseAutoRungs(c, scene.fidelity.errorBudget).refusals)
+    figures += "auto (" + std::to_string(static_cast<int>(std::lround(100 * scene.fidelity.errorBudget))) +
+               " % budget): " + why + "\n";
   const mb::Model& m = derived.model;
   std::printf("\nderived: the %s model (--fidelity %s)\n", vehicle::fidelityName(f), vehicle::fidelityName(f));
   std::printf("  %-18s %9s  %-26s %s\n", "body", "mass kg", "joint", "parent");
@@ -154,7 +177,7 @@ int runInfo(const std::string& path, const std::string& fidelity, const std::vec
   }
   vehicle::Fidelity f = vehicle::Fidelity::Linkage;
   if (!fidelity.empty()) scenario::parseFidelity(fidelity, f);
-  if (f != vehicle::Fidelity::Linkage) printDerived(v, f);
+  if (f != vehicle::Fidelity::Linkage) printDerived(path, settings, v, f);
   return 0;
 }
 
@@ -170,7 +193,7 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
   auto fidelity = std::make_shared<std::string>();
   cmd->add_option("--fidelity", *fidelity,
                   "Also derive this model from the vehicle and print it with its check against the linkage")
-      ->check(CLI::IsMember({"linkage", "kinematic", "planar"}));
+      ->check(CLI::IsMember(rungNameList()));
   auto set = std::make_shared<std::vector<std::string>>();
   addSetOption(*cmd, *set,
                "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000; docs/VEHICLES.md), checked "

@@ -69,8 +69,12 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
               c.factorizations, c.refreshes, c.rescues, c.splits, perStepUs, cost.p50, cost.p99, cost.max,
               r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
   if (spec.fidelity.automatic) {
-    std::printf("fidelity auto: %ld switch%s; steps on the linkage %ld, kinematic %ld, planar %ld\n", r.fidelitySwitches,
-                r.fidelitySwitches == 1 ? "" : "es", r.stepsPerModel[0], r.stepsPerModel[1], r.stepsPerModel[2]);
+    std::printf("fidelity auto: %ld switch%s (largest chassis jump %.2f mm, %.2f mrad; %ld refused: they would have "
+                "moved the chassis); steps on the linkage %ld, kinematic %ld, planar %ld\n",
+                r.fidelitySwitches, r.fidelitySwitches == 1 ? "" : "es", 1e3 * r.fidelity.maxJump,
+                1e3 * r.fidelity.maxTurn, r.fidelity.refused, r.stepsPerModel[0], r.stepsPerModel[1],
+                r.stepsPerModel[2]);
+    for (const std::string& why : sim.world().autoRefusals) std::printf("fidelity auto: %s\n", why.c_str());
   }
   if ((spec.standardTest != scenario::StandardTest::None || !metrics.empty()) && !r.interrupted)
     reportMetrics(spec, sim, r, metrics);

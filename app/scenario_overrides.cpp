@@ -1,10 +1,18 @@
 #include "scenario_overrides.h"
 
+#include "vehicle/ladder.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 namespace bdfcar::app {
+
+std::vector<std::string> rungNameList() {
+  std::vector<std::string> names;
+  for (const vehicle::RungDescription& r : vehicle::ladder()) names.push_back(r.name);
+  return names;
+}
 
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--step", ov.step, "Integration step, s")->check(CLI::Range(1e-6, 0.1));
@@ -18,7 +26,11 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--fidelity", ov.fidelity,
                  "Suspension model: linkage (the vehicle file's), kinematic or planar (derived from it at load "
                  "time), or auto (the cheapest within --error-budget, switched in mid-run where the scene needs it)")
-      ->check(CLI::IsMember({"linkage", "kinematic", "planar", "auto"}));
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names = rungNameList();
+        names.push_back("auto");
+        return names;
+      }()));
   cmd.add_option("--error-budget", ov.errorBudget,
                  "With --fidelity auto: the error allowed against the linkage, % of peak (RMS of yaw rate and "
                  "lateral acceleration; default 10: the planar model where the scene allows it)")

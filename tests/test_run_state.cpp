@@ -37,7 +37,7 @@ std::string driveTicks(scenario::Simulation& sim, int first, int ticks, const st
     for (int i = first; i < first + ticks; ++i) {
       sim.beginTick(personAt(i));
       for (int k = 0; k < sim.stepsPerTick(); ++k) EXPECT_TRUE(sim.step().ok());
-      w.write(sim.sample(), {sim.steerAt(sim.time()), 0, 0, 0, 0, 0, 0, {}});
+      w.write(sim.sample(), {sim.steerAt(sim.time()), 0, 0, 0, 0, 0, 0, 0.0, {}});
     }
   }
   return readFile(file);

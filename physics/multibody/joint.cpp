@@ -1,6 +1,7 @@
 #include "multibody/joint.h"
 
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::mb {
 
@@ -31,7 +32,7 @@ Vec3 relativeRotation(const double* q0, const double* q) {
     const double x2 = s * s / (r.w() * r.w());
     return v * (2.0 / r.w() * (1.0 - x2 * (1.0 / 3.0 - x2 * (1.0 / 5.0 - x2 * (1.0 / 7.0 - x2 / 9.0)))));
   }
-  return v * (2.0 * std::atan2(s, r.w()) / s);
+  return v * (2.0 * pm::atan2(s, r.w()) / s);
 }
 
 }  // namespace
@@ -97,8 +98,8 @@ void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
     case JointType::Universal: {  // v = (alpha_dot about parent x, beta_dot about child y)
       Sj.resize(6, 2);
       Sj.setZero();
-      Sj(3, 0) = std::cos(q[1]);
-      Sj(5, 0) = std::sin(q[1]);
+      Sj(3, 0) = pm::cos(q[1]);
+      Sj(5, 0) = pm::sin(q[1]);
       Sj(4, 1) = 1;
       break;
     }
@@ -126,8 +127,8 @@ Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v) {
   if (type == JointType::Universal) {
     // d/dt of the first column (cos b, 0, sin b) times alpha_dot.
     const double ab = v[0] * v[1];
-    c(3) = -std::sin(q[1]) * ab;
-    c(5) = std::cos(q[1]) * ab;
+    c(3) = -pm::sin(q[1]) * ab;
+    c(5) = pm::cos(q[1]) * ab;
   }
   return c;
 }
@@ -159,7 +160,7 @@ void jointRetract(JointType type, const double* q, const double* dq, double* out
     }
     case JointType::Planar: {
       // As the free joint: the translation increment is in the child frame.
-      const double c = std::cos(q[2]), s = std::sin(q[2]);
+      const double c = pm::cos(q[2]), s = pm::sin(q[2]);
       out[0] = q[0] + c * dq[0] - s * dq[1];
       out[1] = q[1] + s * dq[0] + c * dq[1];
       out[2] = q[2] + dq[2];
@@ -198,7 +199,7 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
       break;
     }
     case JointType::Planar: {
-      const double c = std::cos(base[2]), s = std::sin(base[2]);
+      const double c = pm::cos(base[2]), s = pm::sin(base[2]);
       const double dx = q[0] - base[0], dy = q[1] - base[1];
       out[0] = c * dx + s * dy;
       out[1] = -s * dx + c * dy;
@@ -241,7 +242,7 @@ void jointLocalRate(JointType type, const double* delta, const double* v, double
     }
     case JointType::Planar: {
       // d/dt Rz(a0)^T (p - p0) = Rz(a - a0) v_lin.
-      const double c = std::cos(delta[2]), s = std::sin(delta[2]);
+      const double c = pm::cos(delta[2]), s = pm::sin(delta[2]);
       out[0] = c * v[0] - s * v[1];
       out[1] = s * v[0] + c * v[1];
       out[2] = v[2];

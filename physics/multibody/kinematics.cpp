@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "multibody/joint.h"
+#include "portable_math.h"
 
 namespace bdfcar::mb {
 
@@ -21,7 +22,7 @@ Vec6 jointToBody(const Body& b, const Vec6& m) {
 
 // Rotation about the joint axis by angle t from the rest orientation.
 Mat3 rotateAboutAxis(const Body& b, double t) {
-  const double s = std::sin(t), c = std::cos(t);
+  const double s = pm::sin(t), c = pm::cos(t);
   return b.restRotation + s * b.rodrigues1 + (1.0 - c) * b.rodrigues2;
 }
 
@@ -53,8 +54,8 @@ void tabulatedPose(const Model& model, const Body& b, const double* c, Data& d, 
   SplineGrid::Sample& s = d.tableSamples[b.table];
   table.grid.eval(c[0], b.nv > 1 ? c[1] : 0.0, s);
   const double psi = s.f[3], phi = s.f[4], theta = s.f[5];
-  const double sp = std::sin(psi), cp = std::cos(psi);
-  const double sf = std::sin(phi), cf = std::cos(phi), st = std::sin(theta), ct = std::cos(theta);
+  const double sp = pm::sin(psi), cp = pm::cos(psi);
+  const double sf = pm::sin(phi), cf = pm::cos(phi), st = pm::sin(theta), ct = pm::cos(theta);
   Mat3 M;  // Rz(psi) Rx(phi) Ry(theta), from the sines and cosines once
   M << cp * ct - sp * sf * st, -sp * cf, cp * st + sp * sf * ct,  //
       sp * ct + cp * sf * st, cp * cf, sp * st - cp * sf * ct,    //

@@ -273,6 +273,15 @@ Model ModelBuilder::build() {
   return m;
 }
 
+void refreshJointFrames(Model& m, int body) {
+  Body& b = m.bodies[body];
+  precomputeJoint(b);
+  Eigen::VectorXd q0 = neutralPositions(m);
+  SubspaceBlock Sj;
+  jointSubspace(b.joint, q0.data() + b.qIndex, Sj);
+  for (int k = 0; k < b.nv; ++k) m.S.col(b.vIndex + k) = jointMotionToBody(b, Sj.col(k));
+}
+
 Eigen::VectorXd neutralPositions(const Model& model) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(model.nq);
   for (const auto& b : model.bodies) {

@@ -173,6 +173,10 @@ class ModelBuilder {
   Model model_;
 };
 
+// After a built model's joint frames of `body` were moved (a derived model
+// adjusted in place): what build() computed from them, again.
+void refreshJointFrames(Model& m, int body);
+
 // Neutral (zero-displacement) position vector: identity quaternions, zeros.
 Eigen::VectorXd neutralPositions(const Model& model);
 

@@ -1,6 +1,7 @@
 #include "multibody/spatial.h"
 
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::mb {
 
@@ -13,8 +14,8 @@ Mat3 expSO3(const Vec3& w) {
     b = 0.5 - t2 / 24.0;
   } else {
     const double t = std::sqrt(t2);
-    a = std::sin(t) / t;
-    b = (1.0 - std::cos(t)) / t2;
+    a = pm::sin(t) / t;
+    b = (1.0 - pm::cos(t)) / t2;
   }
   return Mat3::Identity() + a * W + b * (W * W);
 }
@@ -26,7 +27,7 @@ Vec3 logSO3(const Mat3& R) {
   const Vec3 v = q.vec();
   const double s = v.norm();
   if (s < 1e-12) return 2.0 * v;  // theta ~ 2 sin(theta/2)
-  const double theta = 2.0 * std::atan2(s, q.w());
+  const double theta = 2.0 * pm::atan2(s, q.w());
   return v * (theta / s);
 }
 
@@ -40,7 +41,7 @@ Mat3 rightJacobianInverse(const Vec3& theta) {
     c = 1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 * (1.0 / 1209600.0)));
   } else {
     const double t = std::sqrt(t2);
-    c = 1.0 / t2 - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
+    c = 1.0 / t2 - (1.0 + pm::cos(t)) / (2.0 * t * pm::sin(t));
   }
   return Mat3::Identity() + 0.5 * W + c * (W * W);
 }
@@ -55,24 +56,24 @@ Quat expQuat(const Vec3& w) {
     return Quat(c, s * w.x(), s * w.y(), s * w.z());
   }
   const double t = std::sqrt(t2);
-  const double s = std::sin(0.5 * t) / t;
-  return Quat(std::cos(0.5 * t), s * w.x(), s * w.y(), s * w.z());
+  const double s = pm::sin(0.5 * t) / t;
+  return Quat(pm::cos(0.5 * t), s * w.x(), s * w.y(), s * w.z());
 }
 
 Mat3 rotX(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+  const double c = pm::cos(a), s = pm::sin(a);
   Mat3 m;
   m << 1, 0, 0, 0, c, -s, 0, s, c;
   return m;
 }
 Mat3 rotY(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+  const double c = pm::cos(a), s = pm::sin(a);
   Mat3 m;
   m << c, 0, s, 0, 1, 0, -s, 0, c;
   return m;
 }
 Mat3 rotZ(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+  const double c = pm::cos(a), s = pm::sin(a);
   Mat3 m;
   m << c, -s, 0, s, c, 0, 0, 0, 1;
   return m;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -15,7 +16,7 @@ CourseJudge::CourseJudge(const Iso3888Course& course, double length, double widt
 
 void CourseJudge::update(const vehicle::VehicleSample& s) {
   // Footprint in the ground plane: the chassis pose projected.
-  const Eigen::Vector2d heading(std::cos(s.yaw), std::sin(s.yaw)), left(-heading.y(), heading.x());
+  const Eigen::Vector2d heading(pm::cos(s.yaw), pm::sin(s.yaw)), left(-heading.y(), heading.x());
   const Eigen::Vector3d c3 = s.chassisOrigin + s.chassisRotation * centre_;
   const Eigen::Vector2d c(c3.x(), c3.y());
   // In the course: over its length and near its lanes (a car driving past
@@ -46,7 +47,7 @@ void CourseJudge::update(const vehicle::VehicleSample& s) {
         std::abs(d.dot(left)) <= halfWidth_ + kConeBaseRadius) {
       hit_[i] = true;
       ++r_.coneHits;
-      r_.knockedCones.emplace_back(static_cast<int>(i), std::atan2(heading.y(), heading.x()));
+      r_.knockedCones.emplace_back(static_cast<int>(i), pm::atan2(heading.y(), heading.x()));
     }
   }
 }

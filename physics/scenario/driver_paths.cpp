@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -34,8 +35,8 @@ Eigen::Vector2d PolylinePath::target(double x, double y, double lookAhead) const
 }
 
 Eigen::Vector2d CirclePath::target(double x, double y, double lookAhead) const {
-  const double angle = std::atan2(y - centre.y(), x - centre.x()) + direction * lookAhead / radius;
-  return centre + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+  const double angle = pm::atan2(y - centre.y(), x - centre.x()) + direction * lookAhead / radius;
+  return centre + radius * Eigen::Vector2d(pm::cos(angle), pm::sin(angle));
 }
 
 }  // namespace bdfcar::scenario

@@ -2,18 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
 FidelityPolicy::FidelityPolicy(const terrain::Terrain& terrain, double roadZ,
                                const std::array<Eigen::Vector2d, 4>& wheelOffsets,
-                               const std::array<tyre::TyreParams, 4>& tyres)
-    : terrain_(terrain), roadZ_(roadZ), offsets_(wheelOffsets), tyres_(tyres) {}
+                               const std::array<tyre::TyreParams, 4>& tyres, double lateralLevel)
+    : terrain_(terrain), roadZ_(roadZ), offsets_(wheelOffsets), tyres_(tyres), lateralLevel_(lateralLevel) {}
 
 bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
   const terrain::Hit h =
       terrain_.castRay(Eigen::Vector3d(xy.x(), xy.y(), roadZ_ + 1.0), -Eigen::Vector3d::UnitZ(), 2.0);
-  return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= std::cos(kRoadSlope);
+  return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= pm::cos(kRoadSlope);
+}
+
+void FidelityPolicy::refuse(State& s) {
+  s.calm = 0;
+  ++s.refused;
 }
 
 void FidelityPolicy::forceFull(State& s) {
@@ -23,13 +29,13 @@ void FidelityPolicy::forceFull(State& s) {
 }
 
 FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d& com, double yaw, double speed,
-                                                const std::array<vehicle::WheelContact, 4>& wheels,
+                                                double yawRate, const std::array<vehicle::WheelContact, 4>& wheels,
                                                 double tick) const {
   s.odometer += std::abs(speed) * tick;
   // Scan what has come into range: from where the last scan ended (or the
   // wheels, at the start) to the look-ahead, along the heading.
   const double reach = s.odometer + std::max(kMinLookAhead, std::abs(speed) * kLookAhead);
-  const Eigen::Vector2d heading(std::cos(yaw), std::sin(yaw)), left(-heading.y(), heading.x());
+  const Eigen::Vector2d heading(pm::cos(yaw), pm::sin(yaw)), left(-heading.y(), heading.x());
   if (terrain_.levelEverywhere()) s.scanned = reach;  // a level plane: nothing to find
   for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
     for (const Eigen::Vector2d& o : offsets_) {
@@ -38,16 +44,26 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
     }
     s.scanned = d + kScanStep;
   }
-  bool saturated = false;  // or a wheel in the air
+  bool saturated = false;  // or a wheel in the air, or off the road plane, or beyond the certified range
+  double lowestMu = INFINITY;
   for (int w = 0; w < 4; ++w) {
+    const tyre::ContactPlane& g = wheels[w].plane;
+    if (!g.valid || std::abs(g.point.z() - roadZ_) > kRoadHeight || g.normal.z() < pm::cos(kRoadSlope)) {
+      s.fullUntil = std::max(s.fullUntil, s.odometer + kMargin);
+      saturated = true;
+      continue;
+    }
     const tyre::TyreOutput& o = wheels[w].out;
     if (!o.inContact) {  // a wheel off the ground: heave, roll and pitch matter
       saturated = true;
       continue;
     }
-    const double limit = tyre::peakFriction(tyres_[w], wheels[w].plane.friction) * o.Fz;
-    saturated = saturated || std::hypot(o.Fx, o.Fy) > kSaturation * limit;
+    const double mu = tyre::peakFriction(tyres_[w], wheels[w].plane.friction);
+    saturated = saturated || pm::hypot(o.Fx, o.Fy) > kSaturation * mu * o.Fz;
+    lowestMu = std::min(lowestMu, mu);
   }
+  constexpr double kG = 9.81;
+  saturated = saturated || std::abs(speed * yawRate) > lateralLevel_ * lowestMu * kG;
   if (saturated || s.odometer < s.fullUntil) {
     s.calm = 0;
     return Decision::Full;

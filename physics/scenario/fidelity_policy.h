@@ -9,7 +9,12 @@
 //    pitch of the base, up to kMargin past it. The road is scanned once: a
 //    tick scans only what has come into range since the last one; a terrain
 //    that is one level plane is not scanned at all.
-//  - A tyre using more than kSaturation of its friction needs the full model.
+//  - The ground under each wheel now (the contact planes of the last step)
+//    must be the road plane too: a car standing on a hill or a curb is not
+//    on the road plane, whatever the scan says of the road ahead.
+//  - A tyre using more than kSaturation of its friction needs the full model,
+//    and so does a lateral acceleration (speed x yaw rate) beyond the share
+//    of the tyres' limit the planar rung's certificate covers.
 //  - Up at once; down only after kCalm seconds with neither (no chatter).
 // The state is a plain value (part of the run state).
 #pragma once
@@ -33,21 +38,29 @@ class FidelityPolicy {
     double calm = 0;        // s with neither rough road ahead nor a tyre near its limit
     long switches = 0;      // rung switches so far
     long missed = 0;        // of them, up from the planar model standing on ground it cannot drive on
+    long refused = 0;       // switches down refused: the mapping would have moved the chassis
+    double maxJump = 0;     // m, the largest chassis position jump of a switch made
+    double maxTurn = 0;     // rad, the largest chassis rotation of a switch made
     bool operator==(const State&) const = default;
   };
   enum class Decision { Full, Planar, Hold };
 
   // wheelOffsets: each tyre's contact point relative to the centre of mass,
   // in the heading frame (x forward, y left); roadZ: the planar model's road.
+  // lateralLevel: the planar rung's certified range, lateral acceleration
+  // as a share of the tyres' limit (rung_certificate.h; infinite: no limit).
   FidelityPolicy(const terrain::Terrain& terrain, double roadZ, const std::array<Eigen::Vector2d, 4>& wheelOffsets,
-                 const std::array<tyre::TyreParams, 4>& tyres);
+                 const std::array<tyre::TyreParams, 4>& tyres, double lateralLevel);
 
-  // com: centre of mass (x, y); yaw; forward speed; the tyres' latest outputs.
-  Decision decide(State& s, const Eigen::Vector2d& com, double yaw, double speed,
+  // com: centre of mass (x, y); yaw; forward speed; yaw rate; the tyres' latest outputs.
+  Decision decide(State& s, const Eigen::Vector2d& com, double yaw, double speed, double yawRate,
                   const std::array<vehicle::WheelContact, 4>& wheels, double tick) const;
   // The planar model met ground it cannot drive on (the scan missed it):
   // the full model from here for kMargin.
   static void forceFull(State& s);
+  // A switch down refused (it would have moved the chassis): calm again
+  // before the next try.
+  static void refuse(State& s);
   // Whether the ground at a point is the road plane.
   bool level(const Eigen::Vector2d& xy) const;
 
@@ -59,12 +72,17 @@ class FidelityPolicy {
   static constexpr double kCalm = 1.0;          // s
   static constexpr double kRoadHeight = 0.005;  // m off the road plane
   static constexpr double kRoadSlope = 0.5 * 3.14159265358979323846 / 180;  // rad
+  // A switch may not move the chassis more than this (the mapping drops
+  // what the lower rung has not got: heave, travels).
+  static constexpr double kMaxJump = 0.005;  // m
+  static constexpr double kMaxTurn = 0.01;   // rad
 
  private:
   const terrain::Terrain& terrain_;
   double roadZ_;
   std::array<Eigen::Vector2d, 4> offsets_;
   std::array<tyre::TyreParams, 4> tyres_;
+  double lateralLevel_;
 };
 
 }  // namespace bdfcar::scenario

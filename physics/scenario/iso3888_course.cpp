@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -61,7 +62,7 @@ std::vector<Eigen::Vector3d> Iso3888Course::cones(double spacing) const {
 }
 
 double Iso3888Course::referenceY(double x) const {
-  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - std::cos(std::numbers::pi * s)); };
+  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - pm::cos(std::numbers::pi * s)); };
   const CourseLane &a = lanes[0], &b = lanes[1], &e = lanes[2];
   if (x <= a.x1) return a.centreY;
   if (x < b.x0) return blend(a.centreY, b.centreY, (x - a.x1) / (b.x0 - a.x1));
@@ -71,7 +72,7 @@ double Iso3888Course::referenceY(double x) const {
 }
 
 double Iso3888Course::drivingLineY(double x, double carWidth, double marginUse) const {
-  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - std::cos(std::numbers::pi * s)); };
+  auto blend = [](double y0, double y1, double s) { return y0 + (y1 - y0) * 0.5 * (1 - pm::cos(std::numbers::pi * s)); };
   const CourseLane &a = lanes[0], &b = lanes[1], &e = lanes[2];
   auto spare = [&](const CourseLane& l) { return marginUse * std::max(0.0, 0.5 * (l.width - carWidth)); };
   const double side = b.centreY > a.centreY ? 1.0 : -1.0;  // the side lane lies to this side

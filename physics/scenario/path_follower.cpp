@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -20,10 +21,10 @@ double PathFollower::steer(double x, double y, double yaw, double v, double yawR
   const double tx = target.x(), ty = target.y();
   // Pure pursuit: curvature 2 sin(eta) / L with eta the angle to the target in the vehicle frame.
   const double dx = tx - x, dy = ty - y;
-  const double eta = std::atan2(dy, dx) - yaw;
-  const double curvature = 2.0 * std::sin(eta) / std::hypot(dx, dy);
+  const double eta = pm::atan2(dy, dx) - yaw;
+  const double curvature = 2.0 * pm::sin(eta) / pm::hypot(dx, dy);
   lastCurvature_ = curvature;
-  const double roadWheel = std::atan(p_.wheelbase * curvature * gain_);
+  const double roadWheel = pm::atan(p_.wheelbase * curvature * gain_);
   return std::clamp(roadWheel * p_.steerPerRoadWheel, -1.0, 1.0);
 }
 

@@ -41,12 +41,13 @@ Run::~Run() = default;
 TelemetryInputs Run::rowInputs() const {
   const DriverInput in = sim_.lastInput();
   return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_,
-          static_cast<int>(sim_.vehicle().fidelity), sim_.powertrainChannels()};
+          static_cast<int>(sim_.vehicle().fidelity), 0.0, sim_.powertrainChannels()};
 }
 
 void Run::record() {
   if (!config_.sample) return;
-  const TelemetryInputs ti = rowInputs();
+  TelemetryInputs ti = rowInputs();
+  ti.switchJump = sim_.takeSwitchJump();
   if (telemetry_) telemetry_->write(sample_, ti);
   if (config_.keepSamples) {
     samples_.push_back(sample_);
@@ -202,6 +203,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   r.counters = sim.counters();
   r.timers = sim.timers();
   r.fidelitySwitches = sim.fidelitySwitches();
+  r.fidelity = sim.fidelityState();
   r.stepsPerModel = run->stepsPerModel();
   r.samples = std::move(run->samples());
   r.stepSeconds = std::move(run->stepSeconds());

@@ -58,6 +58,7 @@ struct RunResult {
   bool interrupted = false;         // ended early on options.stopRequested
   std::vector<float> stepSeconds;   // wall time of each manoeuvre step (per-step cost)
   long fidelitySwitches = 0;        // model switches under `[fidelity] suspension = "auto"`
+  FidelityPolicy::State fidelity;   // `auto`'s at the end: switches refused, largest jumps
   std::array<long, 3> stepsPerModel{};  // manoeuvre steps per vehicle::Fidelity (linkage, kinematic, planar)
 };
 

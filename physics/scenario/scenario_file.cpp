@@ -7,6 +7,7 @@
 #include "config/toml_reader.h"
 #include "scenario/scenario_spec.h"
 #include "terrain/terrain_file.h"
+#include "vehicle/ladder.h"
 #include "vehicle/motion_ratio.h"
 
 namespace bdfcar::scenario {
@@ -259,11 +260,9 @@ SignalSpec normalisedSteering(const SignalSpec& in, const vehicle::Vehicle& link
 }
 
 bool parseFidelity(const std::string& name, vehicle::Fidelity& out) {
-  if (name == "linkage") out = vehicle::Fidelity::Linkage;
-  else if (name == "kinematic") out = vehicle::Fidelity::Kinematic;
-  else if (name == "planar") out = vehicle::Fidelity::Planar;
-  else return false;
-  return true;
+  const std::optional<vehicle::Fidelity> f = vehicle::rungByName(name);
+  if (f) out = *f;
+  return f.has_value();
 }
 
 bool parseFidelity(const std::string& name, FidelitySpec& out) {
@@ -271,12 +270,6 @@ bool parseFidelity(const std::string& name, FidelitySpec& out) {
   return out.automatic || parseFidelity(name, out.suspension);
 }
 
-AutoRungs autoRungs(double errorBudget) {
-  AutoRungs r;
-  if (errorBudget >= kKinematicErrorBound) r.full = vehicle::Fidelity::Kinematic;
-  r.planar = errorBudget >= kPlanarErrorBound;
-  return r;
-}
 
 int stepsPerTick(double tick, double step) {
   if (!(tick > 0) || !(step > 0)) return 0;
@@ -343,7 +336,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
   if (auto f = root.optionalTable("fidelity")) {
     const std::string susp = f->string("suspension", "linkage");
     if (!parseFidelity(susp, s.fidelity))
-      f->fail("unknown suspension model '" + susp + "': expected linkage, kinematic, planar or auto", "suspension");
+      f->fail("unknown suspension model '" + susp + "': expected " + vehicle::rungNames() + " or auto", "suspension");
     s.fidelity.errorBudget = f->number("error_budget", Dimension::None, kErrorBudget, s.fidelity.errorBudget);
     f->finish();
   }

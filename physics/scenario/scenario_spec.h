@@ -87,29 +87,21 @@ struct CheckSpec {
 
 // What the scene needs of the vehicle model ([fidelity]): the rung of the
 // ladder the vehicle file is turned into (docs/DESIGN.md, "Fidelity").
-// "auto": the cheapest rung whose error bound is within error_budget, and
-// where that is the planar model, the kinematic one wherever the scene needs
-// heave, roll and pitch of the base or is near the tyres' limit, switched in
-// mid-run (scenario/fidelity_policy.h).
+// "auto": the cheapest rungs whose certificate for the car is within
+// error_budget (rung_certificate.h), and where that is the planar model, the
+// kinematic one wherever the scene needs heave, roll and pitch of the base,
+// is near the tyres' limit or beyond the planar rung's certified range,
+// switched in mid-run (scenario/fidelity_policy.h).
 struct FidelitySpec {
   vehicle::Fidelity suspension = vehicle::Fidelity::Linkage;
   bool automatic = false;
-  double errorBudget = 0.10;  // RMS of peak, yaw rate and lateral acceleration (fraction)
+  double errorBudget = 0.10;  // fraction of the linkage's peak: RMS of yaw rate, a_y, roll and chassis height
 };
 
-// The bounds each derived rung is held to against the linkage on the
-// reference J-turn and lane change (tests/test_scenario.cpp, Fidelity.*):
-// what `auto` compares the error budget with.
-constexpr double kKinematicErrorBound = 0.003;
+// The default error budget of `auto` (fidelity.error_budget): each derived
+// rung is used where its certificate for the car (rung_certificate.h) is
+// within the scene's budget.
 constexpr double kPlanarErrorBound = 0.10;
-
-// What `auto` runs: the full rung it switches up to, and whether it may
-// switch down to the planar model.
-struct AutoRungs {
-  vehicle::Fidelity full = vehicle::Fidelity::Linkage;
-  bool planar = false;
-};
-AutoRungs autoRungs(double errorBudget);
 
 // A standard test the scenario is ([metrics] test): its metrics are
 // computed after the run (scenario/standard_tests.h).
@@ -118,6 +110,7 @@ enum class StandardTest { None, Iso7401StepSteer, Fmvss126SineWithDwell, Iso4138
 struct ScenarioSpec {
   std::string name, sourceFile;
   std::string vehicleFile, terrainFile;  // resolved paths; terrainFile empty = flat plane z = 0
+  double groundGrade = 0;  // without a terrain file: the plane rises at this grade along +x (set in code, no key)
   std::vector<config::Setting> vehicleSettings;  // --set vehicle.KEY=VALUE: over the vehicle file
   double duration = 4.0;       // manoeuvre time, s
   double initialSpeed = 0;     // m/s

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -16,7 +17,7 @@ namespace {
 // amplitude sin(w tau) and its two derivatives.
 SignalValue sine(double amplitude, double w, double tau) {
   const double x = w * tau;
-  return {amplitude * std::sin(x), amplitude * w * std::cos(x), -amplitude * w * w * std::sin(x)};
+  return {amplitude * pm::sin(x), amplitude * w * pm::cos(x), -amplitude * w * w * pm::sin(x)};
 }
 }  // namespace
 
@@ -39,7 +40,7 @@ SignalValue ChirpSignal::at(double t) const {
   if (!(tau >= 0) || tau >= duration_) return {};
   const double k = (f1_ - f0_) / duration_, two_pi = 2 * std::numbers::pi;
   const double phi = two_pi * (f0_ * tau + 0.5 * k * tau * tau), rate = two_pi * (f0_ + k * tau), accel = two_pi * k;
-  const double s = std::sin(phi), c = std::cos(phi);
+  const double s = pm::sin(phi), c = pm::cos(phi);
   return {amplitude_ * s, amplitude_ * c * rate, amplitude_ * (c * accel - s * rate * rate)};
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <stdexcept>
 
@@ -12,9 +13,11 @@
 #include "multibody/model_error.h"
 #include "terrain/bullet/bullet_terrain.h"
 #include "terrain/terrain_file.h"
+#include "scenario/planar_rung.h"
 #include "vehicle/motion_ratio.h"
 #include "vehicle/rung_mapping.h"
 #include "vehicle/vehicle_file.h"
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -75,8 +78,31 @@ double driveLimit(const vehicle::Vehicle& v) {
 }
 
 std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
-  if (spec.terrainFile.empty()) return std::make_unique<terrain::PlaneTerrain>();
+  if (spec.terrainFile.empty())
+    return std::make_unique<terrain::PlaneTerrain>(Eigen::Vector3d::Zero(),
+                                                   Eigen::Vector3d(-spec.groundGrade, 0.0, 1.0).normalized());
   return terrain::makeTerrain(terrain::loadTerrain(spec.terrainFile));
+}
+
+}  // namespace
+
+namespace {
+
+// What every world needs besides its vehicle: the step against the tick, the
+// terrain, the planar road plane, the course.
+void finishWorld(World& w) {
+  const ScenarioSpec& spec = w.spec;
+  w.stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
+  if (w.stepsPerTick == 0)
+    throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
+                             " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
+  w.terrain = loadGround(spec);
+  // The planar model's road is the level plane through the ground at the start.
+  const terrain::Hit g = w.terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
+  if (w.vehicle.fidelity == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w.vehicle, g.hit ? g.point.z() : 0.0);
+  if (w.planar) vehicle::setPlanarGround(*w.planar, g.hit ? g.point.z() : 0.0);
+  if (spec.course.iso3888) w.course = makeIso3888Course(vehicleWidth(w.vehicle), spec.course.startX,
+                                                     std::isnan(spec.course.centreY) ? spec.startY : spec.course.centreY, spec.course.part);
 }
 
 }  // namespace
@@ -84,15 +110,13 @@ std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
 std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   auto w = std::make_shared<World>();
   w->spec = spec;
-  w->stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
-  if (w->stepsPerTick == 0)
-    throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
-                             " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
+  if (stepsPerTick(spec.tick, spec.integrator.step) == 0) {
+    finishWorld(*w);  // throws, naming the step and the tick
+  }
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile, spec.vehicleSettings));
   // Steering in engineering units becomes the normalised input, from the linkage's scales.
   w->spec.steering = normalisedSteering(spec.steering, w->vehicle);
-  const scenario::AutoRungs automatic = autoRungs(spec.fidelity.errorBudget);
-  const vehicle::Fidelity rung = spec.fidelity.automatic ? automatic.full : spec.fidelity.suspension;
+  const vehicle::Fidelity rung = spec.fidelity.suspension;
   // A derived model names the vehicle file and the rung the scenario asked for.
   auto derive = [&](auto derivation) {
     try {
@@ -102,28 +126,42 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
                            (spec.fidelity.automatic ? "auto" : vehicle::fidelityName(rung)) + ")");
     }
   };
-  if (spec.fidelity.automatic && automatic.planar) {
-    // Both rungs from one derivation: the planar model is the kinematic one's.
-    vehicle::PlanarDerivation p = derive([](const vehicle::Vehicle& v) { return vehicle::derivePlanar(v); });
-    w->vehicle = std::move(p.kinematic.vehicle);
-    w->kinematicCheck = p.kinematic.check;
-    w->planar = std::move(p.vehicle);
+  if (spec.fidelity.automatic) {
+    // Both derived rungs from one derivation (the planar model is the
+    // kinematic one's), certified against the linkage for this car at this
+    // step; `auto` uses those within the budget.
+    vehicle::PlanarDerivation p = derive([&](const vehicle::Vehicle& v) { return derivePlanarRung(spec, v); });
+    w->certificate = certifyLadder(spec, w->vehicle, p);
+    const AutoRungChoice choice = chooseAutoRungs(*w->certificate, spec.fidelity.errorBudget);
+    w->autoRefusals = choice.refusals;
+    w->planarLevel = choice.planarLevel;
+    if (choice.full == vehicle::Fidelity::Kinematic) {
+      w->vehicle = std::move(p.kinematic.vehicle);
+      w->kinematicCheck = p.kinematic.check;
+      if (choice.planar) w->planar = std::move(p.vehicle);
+    }
   } else if (rung == vehicle::Fidelity::Kinematic) {
     vehicle::KinematicDerivation k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
     w->vehicle = std::move(k.vehicle);
     w->kinematicCheck = k.check;
   } else if (rung == vehicle::Fidelity::Planar) {
-    vehicle::PlanarDerivation p = derive([](const vehicle::Vehicle& v) { return vehicle::derivePlanar(v); });
+    vehicle::PlanarDerivation p = derive([&](const vehicle::Vehicle& v) { return derivePlanarRung(spec, v); });
     w->vehicle = std::move(p.vehicle);
     w->kinematicCheck = p.kinematic.check;
   }
-  w->terrain = loadGround(spec);
-  // The planar model's road is the level plane through the ground at the start.
-  const terrain::Hit g = w->terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
-  if (rung == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w->vehicle, g.hit ? g.point.z() : 0.0);
-  if (w->planar) vehicle::setPlanarGround(*w->planar, g.hit ? g.point.z() : 0.0);
-  if (spec.course.iso3888) w->course = makeIso3888Course(vehicleWidth(w->vehicle), spec.course.startX,
-                                                      std::isnan(spec.course.centreY) ? spec.startY : spec.course.centreY, spec.course.part);
+  finishWorld(*w);
+  return w;
+}
+
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle::Vehicle& linkage,
+                                        vehicle::Vehicle model) {
+  auto w = std::make_shared<World>();
+  w->spec = spec;
+  w->spec.fidelity = FidelitySpec{};
+  w->spec.fidelity.suspension = model.fidelity;
+  w->spec.steering = normalisedSteering(spec.steering, linkage);
+  w->vehicle = std::move(model);
+  finishWorld(*w);
   return w;
 }
 
@@ -157,7 +195,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     std::array<tyre::TyreParams, 4> tyres{veh.wheel(0).tyre, veh.wheel(1).tyre, veh.wheel(2).tyre, veh.wheel(3).tyre};
     for (int w = 0; w < 4; ++w) offsets[w] = (P.basePoint[w] - P.comInBase).head<2>();
     policy_.emplace(*world_->terrain, world_->planar->model.bodies[world_->planar->layout.base].inParent.origin.z(),
-                    offsets, tyres);
+                    offsets, tyres, world_->planarLevel);
   }
   activate(0);
   if (veh.spec.powertrain) transmission_.emplace(*veh.spec.powertrain);
@@ -177,7 +215,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     if (f.path == PathFollowerSpec::Path::Course) {
       // Keep 40 % of each lane's spare width for the tracking error; the course runs along +x.
       target = [c = *world_->course, w = vehicleWidth(veh)](double x, double, double yaw, double L) {
-        const double tx = x + L * std::cos(yaw);
+        const double tx = x + L * pm::cos(yaw);
         return Eigen::Vector2d(tx, c.drivingLineY(tx, w, 0.6));
       };
     } else if (f.path == PathFollowerSpec::Path::Polyline) {
@@ -191,7 +229,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       c.radius = f.radius;
       c.direction = side;
       c.centre = Eigen::Vector2d(spec.startX, spec.startY) +
-                 side * f.radius * Eigen::Vector2d(-std::sin(spec.startHeading), std::cos(spec.startHeading));
+                 side * f.radius * Eigen::Vector2d(-pm::sin(spec.startHeading), pm::cos(spec.startHeading));
       target = [c](double x, double y, double, double L) { return c.target(x, y, L); };
     }
     follower_.emplace(p, target);
@@ -219,6 +257,7 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   // derived model, the rack travel of each steered corner's table.
   for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
   r.integrator = makeIntegrator(*r.dae);
+  r.scratch = mb::makeData(veh.model);
   return r;
 }
 
@@ -237,13 +276,33 @@ void Simulation::activate(int rung) {
   integrator_ = rungs_[rung].integrator.get();
 }
 
-void Simulation::switchRung(int rung) {
-  if (rung == active_) return;
+Simulation::ChassisPose Simulation::chassisPose(int rung, const integ::Vec& q) {
+  Rung& r = rungs_[rung];
+  mb::updatePositions(r.vehicle->model, q, r.scratch);
+  const int ch = r.vehicle->layout.chassis;  // the sprung body of the planar model
+  return {r.scratch.p[ch], r.scratch.R[ch]};
+}
+
+bool Simulation::switchRung(int rung) {
+  if (rung == active_) return true;
   if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
   const integ::SolutionPoint from = integrator_->current();
   Eigen::VectorXd q, v;
   if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, from.q, from.v, q, v);
   else vehicle::planarToKinematic(*world_->planar, world_->vehicle, from.q, from.v, q, v);
+  // A switch never moves the chassis: what the mapping drops (heave, the
+  // travels) must be what the lower rung would have anyway. Up, the mapping
+  // copies the sprung body's pose (a jump there would be a bug, and staying
+  // on a rung outside its validity is no option: it is measured, not refused).
+  const ChassisPose a = chassisPose(active_, from.q), b = chassisPose(rung, q);
+  const double jump = (b.p - a.p).norm();
+  const Eigen::Matrix3d M = a.R.transpose() * b.R;
+  const Eigen::Vector3d axis(M(2, 1) - M(1, 2), M(0, 2) - M(2, 0), M(1, 0) - M(0, 1));
+  const double turn = pm::atan2(0.5 * axis.norm(), 0.5 * (M.trace() - 1.0));
+  if (rung > active_ && (jump > FidelityPolicy::kMaxJump || turn > FidelityPolicy::kMaxTurn)) {
+    FidelityPolicy::refuse(policyState_);
+    return false;
+  }
   // The force laws' states (contact planes, transient slips, brakes, held
   // inputs) are per wheel in both models.
   const vehicle::VehicleForces::State forces = forces_->state();
@@ -254,12 +313,22 @@ void Simulation::switchRung(int rung) {
     throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
                              " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
   ++policyState_.switches;
+  policyState_.maxJump = std::max(policyState_.maxJump, jump);
+  policyState_.maxTurn = std::max(policyState_.maxTurn, turn);
+  switchJump_ = std::max(switchJump_, jump);
+  return true;
+}
+
+double Simulation::takeSwitchJump() {
+  const double j = switchJump_;
+  switchJump_ = 0;
+  return j;
 }
 
 void Simulation::chooseRung() {
   const ChassisState c = chassisState();
   const FidelityPolicy::Decision d =
-      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, forces_->wheels(), spec().tick);
+      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, c.yawRate, forces_->wheels(), spec().tick);
   if (d == FidelityPolicy::Decision::Full) switchRung(0);
   if (d == FidelityPolicy::Decision::Planar) switchRung(1);
 }
@@ -278,7 +347,7 @@ integ::Timers Simulation::timers() const {
 
 Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
-  const Eigen::Matrix3d yaw = Eigen::AngleAxisd(spec().startHeading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d yaw = mb::rotZ(spec().startHeading);
   const Eigen::Vector3d start(spec().startX, spec().startY, 0.0);
   auto groundAt = [&](const Eigen::Vector3d& p) {
     const terrain::Hit g = world_->terrain->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
@@ -323,7 +392,7 @@ vehicle::EquilibriumReport Simulation::prepare() {
   const mb::Body& base = m.bodies[vehicle().layout.base];
   if (base.joint == mb::JointType::Planar) {
     // Level ground only: the planar model has no heave, roll or pitch of its base.
-    const double slope = std::acos(std::clamp(pose.rotation(2, 2), -1.0, 1.0));
+    const double slope = pm::acos(std::clamp(pose.rotation(2, 2), -1.0, 1.0));
     if (slope > 1e-3)
       throw PrepareError(spec().sourceFile + ": the ground under the start slopes by " +
                          std::to_string(slope * 180 / M_PI) +
@@ -480,7 +549,7 @@ Simulation::ChassisState Simulation::chassisState() const {
     const double* qb = p.q.data() + b.qIndex;
     const double u = p.v(b.vIndex), r = p.v(b.vIndex + 2);
     const Eigen::Vector3d c = vehicle().planar->comInBase;
-    const double cy = std::cos(qb[2]), sy = std::sin(qb[2]);
+    const double cy = pm::cos(qb[2]), sy = pm::sin(qb[2]);
     ChassisState s;
     s.com = Eigen::Vector3d(qb[0] + cy * c.x() - sy * c.y(), qb[1] + sy * c.x() + cy * c.y(), c.z());
     s.yaw = qb[2];
@@ -494,7 +563,7 @@ Simulation::ChassisState Simulation::chassisState() const {
   const Eigen::Vector3d vb = p.v.segment<3>(ch.vIndex), wb = p.v.segment<3>(ch.vIndex + 3);
   ChassisState s;
   s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
-  s.yaw = std::atan2(R(1, 0), R(0, 0));
+  s.yaw = pm::atan2(R(1, 0), R(0, 0));
   s.vx = (vb + wb.cross(ch.com)).x();
   s.yawRate = wb.z();
   return s;
@@ -557,6 +626,11 @@ integ::StepReport Simulation::step() {
       return r;
     }
   }
+  if (const std::optional<std::string> under = belowGround()) {
+    r.status = integ::StepStatus::StateCheckFailed;
+    r.message.set("%s", under->c_str());
+    return r;
+  }
   if (airborne_ > kMaxAirborne) {
     const Eigen::Vector3d com = chassisState().com;
     r.status = integ::StepStatus::StateCheckFailed;
@@ -567,6 +641,37 @@ integ::StepReport Simulation::step() {
   return r;
 }
 
+std::optional<std::string> Simulation::belowGround() const {
+  // A wheel centre behind its contact plane has sunk through the road; one
+  // whose ray found no ground (the ray starts a radius above the centre) may
+  // be deep inside it: a ray from far above to the centre tells. The
+  // chassis is looked at only when a wheel is off the ground.
+  const mb::Data& d = dae_->data();
+  const auto groundAbove = [&](const Eigen::Vector3d& p) {
+    constexpr double kAbove = 20.0;  // m
+    return world_->terrain->castRay(p + kAbove * Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(), kAbove).hit;
+  };
+  char buf[300];
+  bool lifted = false;
+  for (int w = 0; w < 4; ++w) {
+    const Eigen::Vector3d& c = d.p[vehicle().layout.wheels[w].spindle];
+    const vehicle::WheelContact& wc = forces_->wheels()[w];
+    const bool sunk = wc.plane.valid ? (c - wc.plane.point).dot(wc.plane.normal) < 0 : groundAbove(c);
+    lifted = lifted || !wc.plane.valid || !wc.out.inContact;
+    if (!sunk) continue;
+    std::snprintf(buf, sizeof buf,
+                  "wheel %s's centre went below the ground at t = %.2f s (x = %.1f m, y = %.1f m, z = %.2f m, %s model)",
+                  vehicle::kCornerNames[w], time(), c.x(), c.y(), c.z(), vehicle::fidelityName(vehicle().fidelity));
+    return std::string(buf);
+  }
+  if (!lifted) return std::nullopt;
+  const Eigen::Vector3d& com = d.p[vehicle().layout.chassis];  // its reference frame's origin
+  if (!groundAbove(com)) return std::nullopt;
+  std::snprintf(buf, sizeof buf, "the chassis went below the ground at t = %.2f s (x = %.1f m, y = %.1f m, z = %.2f m, %s model)",
+                time(), com.x(), com.y(), com.z(), vehicle::fidelityName(vehicle().fidelity));
+  return std::string(buf);
+}
+
 std::optional<std::string> Simulation::offLevelGround() const {
   // The planar model has no heave, roll or pitch of its base: the ground
   // under every wheel must be its road plane, or the run stops saying so.
@@ -574,16 +679,19 @@ std::optional<std::string> Simulation::offLevelGround() const {
   for (int w = 0; w < 4; ++w) {
     const tyre::ContactPlane& g = forces_->wheels()[w].plane;
     const double rise = g.valid ? g.point.z() - road : NAN;
-    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= std::cos(FidelityPolicy::kRoadSlope))
+    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= pm::cos(FidelityPolicy::kRoadSlope))
       continue;
-    char buf[300];
+    const double grade = g.valid ? pm::hypot(g.normal.x(), g.normal.y()) / std::max(1e-9, g.normal.z()) : 0.0;
+    char buf[700];
     std::snprintf(buf, sizeof buf,
                   "the planar model left level ground at t = %.2f s: under wheel %s at x = %.1f m, y = %.1f m the "
-                  "ground %s; [fidelity] suspension = planar drives on level ground only (use kinematic or linkage)",
+                  "ground %s (its slope there %.1f %%, %.1f deg; the road plane's height %.3f m, the ground's %.3f m); "
+                  "[fidelity] suspension = planar drives on level ground only (use kinematic or linkage)",
                   time(), vehicle::kCornerNames[w], g.point.x(), g.point.y(),
                   !g.valid ? "is missing"
                            : (std::abs(rise) > FidelityPolicy::kRoadHeight ? (rise > 0 ? "rises above the road plane" : "drops below the road plane")
-                                                                 : "slopes"));
+                                                                 : "slopes"),
+                  100 * grade, pm::atan(grade) * 180 / M_PI, road, g.valid ? g.point.z() : NAN);
     return std::string(buf);
   }
   return std::nullopt;

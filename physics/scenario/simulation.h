@@ -13,17 +13,20 @@
 // The run driver (scenario/run.h) does exactly this for every command.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "integrator/step_types.h"
+#include "multibody/data.h"
 #include "multibody/multibody_dae.h"
 #include "scenario/driver_input.h"
 #include "scenario/fidelity_policy.h"
 #include "scenario/iso3888_course.h"
 #include "scenario/path_follower.h"
+#include "scenario/rung_certificate.h"
 #include "scenario/scenario_spec.h"
 #include "scenario/signals.h"
 #include "scenario/speed_controller.h"
@@ -59,11 +62,20 @@ struct World {
   // `auto` with the planar model allowed: the rung it switches down to
   // (`vehicle` is then the kinematic model it switches up to).
   std::optional<vehicle::Vehicle> planar;
+  // `auto`: the derived rungs' certificate for this car at this step, and
+  // why a rung it does not use was refused (printed by `run`).
+  std::optional<LadderCertificate> certificate;
+  std::vector<std::string> autoRefusals;
+  double planarLevel = std::numeric_limits<double>::infinity();  // the planar rung's certified lateral range (share of mu g)
 };
 
 // Loads the vehicle and terrain files and builds the world; throws on bad
 // data or a step that does not divide the tick.
 std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec);
+// A world for one model already derived from `linkage` (the certificate's
+// runs): the scenario's terrain, course and step, the rung as given.
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle::Vehicle& linkage,
+                                        vehicle::Vehicle model);
 
 // Everything that changes while a scenario runs, as one plain value:
 // copyable, comparable, restorable. The Jacobian is not part of it (a run
@@ -131,7 +143,11 @@ class Simulation {
   // the integrator restarted; what `auto` does at a tick).
   int rung() const { return active_; }
   int rungCount() const { return static_cast<int>(rungs_.size()); }
-  void switchRung(int rung);
+  // False when the switch down was refused: the mapping would have moved
+  // the chassis by more than FidelityPolicy::kMaxJump or kMaxTurn.
+  bool switchRung(int rung);
+  // The largest chassis jump (m) of the switches made since the last call.
+  double takeSwitchJump();
   const FidelityPolicy::State& fidelityState() const { return policyState_; }
   long fidelitySwitches() const { return policyState_.switches; }
   // The work of every rung's integrator.
@@ -187,7 +203,13 @@ class Simulation {
     std::unique_ptr<vehicle::VehicleForces> forces;
     std::unique_ptr<mb::MultibodyDae> dae;
     std::unique_ptr<integ::Integrator> integrator;
+    mb::Data scratch;  // poses for the switch's jump check (no allocation then)
   };
+  struct ChassisPose {
+    Eigen::Vector3d p;
+    Eigen::Matrix3d R;
+  };
+  ChassisPose chassisPose(int rung, const integ::Vec& q);
   Rung makeRung(const vehicle::Vehicle& v);
   void activate(int rung);
   void chooseRung();  // `auto`, at a tick
@@ -202,6 +224,7 @@ class Simulation {
   integ::Integrator* integrator_ = nullptr;
   std::optional<FidelityPolicy> policy_;
   FidelityPolicy::State policyState_;
+  double switchJump_ = 0;  // m, for the telemetry: see takeSwitchJump
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
   std::optional<Transmission> transmission_;
@@ -219,6 +242,9 @@ class Simulation {
   // (FidelityPolicy::level's tolerances): a rough road's or a curb's height,
   // or a slope, needs a rung with heave, roll and pitch.
   std::optional<std::string> offLevelGround() const;
+  // A wheel centre or the chassis below the ground (any rung): the run stops
+  // saying where, never records a car inside the ground.
+  std::optional<std::string> belowGround() const;
 };
 
 // The vehicle width used for the ISO course: overall width over the tyres.

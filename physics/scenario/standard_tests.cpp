@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "vehicle/motion_ratio.h"
+#include "portable_math.h"
 
 namespace bdfcar::scenario {
 
@@ -143,7 +144,7 @@ SineWithDwellMetrics fmvss126SineWithDwell(const TimeHistory& h, double beginThr
   const double t0 = m.beginOfSteer, t1 = t0 + 1.07;
   const double h0 = at(h.t, h.heading, t0);
   const double dx = at(h.t, h.x, t1) - at(h.t, h.x, t0), dy = at(h.t, h.y, t1) - at(h.t, h.y, t0);
-  m.lateralDisplacement = s1 * (-std::sin(h0) * dx + std::cos(h0) * dy);
+  m.lateralDisplacement = s1 * (-pm::sin(h0) * dx + pm::cos(h0) * dy);
   m.passYaw1000 = m.yawRatio1000 <= SineWithDwellMetrics::kYaw1000Limit;
   m.passYaw1750 = m.yawRatio1750 <= SineWithDwellMetrics::kYaw1750Limit;
   m.passDisplacement = m.lateralDisplacement >= SineWithDwellMetrics::kDisplacementLimit;

@@ -19,7 +19,7 @@ const char* TelemetryWriter::header() {
          "camber_FL_deg,camber_FR_deg,camber_RL_deg,camber_RR_deg,toe_FL_deg,toe_FR_deg,toe_RL_deg,toe_RR_deg,"
          "travel_FL_m,travel_FR_m,travel_RL_m,travel_RR_m,Fspring_FL_N,Fspring_FR_N,Fspring_RL_N,Fspring_RR_N,"
          "Fdamper_FL_N,Fdamper_FR_N,Fdamper_RL_N,Fdamper_RR_N,Fstop_FL_N,Fstop_FR_N,Fstop_RL_N,Fstop_RR_N,"
-         "Mz_FL_Nm,Mz_FR_Nm,Mz_RL_Nm,Mz_RR_Nm";
+         "Mz_FL_Nm,Mz_FR_Nm,Mz_RL_Nm,Mz_RR_Nm,switch_jump_m";
 }
 
 const char* TelemetryWriter::powertrainHeader() {
@@ -152,7 +152,7 @@ void TelemetryWriter::formatRow(const Row& r) {
       s.Fx[3], s.spinRate[0], s.spinRate[1], s.spinRate[2], s.spinRate[3], s.rackForce};
   // The suspension and tyre channels, after the integer columns (appended
   // later: the columns before them keep their places).
-  double corners[7 * 4 + 5] = {s.sideslip, s.rollRate, s.pitchRate, config::radToDeg(s.steerAngle[2]),
+  double corners[7 * 4 + 5 + 1] = {s.sideslip, s.rollRate, s.pitchRate, config::radToDeg(s.steerAngle[2]),
                                config::radToDeg(s.steerAngle[3])};
   for (int w = 0; w < 4; ++w) {
     double* c = corners + 5 + w;
@@ -164,6 +164,7 @@ void TelemetryWriter::formatRow(const Row& r) {
     c[20] = s.stopForce[w];
     c[24] = s.Mz[w];
   }
+  corners[7 * 4 + 5] = in.switchJump;
   char row[4096];
   char* p = row;
   char* const end = row + sizeof row;

@@ -38,6 +38,7 @@ struct TelemetryInputs {
   double newtonCorrection = 0;  // weighted norm of the last correction (1 = tolerance)
   int segment = 0;              // a drive's segment: +1 at each reset, rewind or divergence reset
   int fidelity = 0;             // the model driving: vehicle::Fidelity (0 linkage, 1 kinematic, 2 planar)
+  double switchJump = 0;        // m, the chassis moved by rung switches since the last row (`auto`)
   PowertrainChannels powertrain;  // written when the vehicle has a powertrain
 };
 

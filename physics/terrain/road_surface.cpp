@@ -7,6 +7,7 @@
 #include <string>
 
 #include "terrain/terrain_mesh.h"
+#include "portable_math.h"
 
 namespace bdfcar::terrain {
 
@@ -30,25 +31,25 @@ double bumpHeight(const Bump& b, double x, double y, int sideX, int sideY) {
   if (!within(y, sideY, b.yMin, b.yMax)) return 0.0;
   if (b.profile == Bump::Profile::Step) return within(x, sideX, b.x, b.x + b.length) ? b.height : 0.0;
   if (x <= b.x || x >= b.x + b.length) return 0.0;
-  return 0.5 * b.height * (1.0 - std::cos(2.0 * std::numbers::pi * (x - b.x) / b.length));
+  return 0.5 * b.height * (1.0 - pm::cos(2.0 * std::numbers::pi * (x - b.x) / b.length));
 }
 
 bool verticalDrop(const Ramp& r) { return r.dropAngle >= std::numbers::pi / 2; }
 
 // x where the rising face reaches the top, the top ends, and the falling face ends.
 std::array<double, 3> rampBreaks(const Ramp& r) {
-  const double topStart = r.x + r.height / std::tan(r.angle);
+  const double topStart = r.x + r.height / pm::tan(r.angle);
   const double topEnd = topStart + r.topLength;
-  return {topStart, topEnd, verticalDrop(r) ? topEnd : topEnd + r.height / std::tan(r.dropAngle)};
+  return {topStart, topEnd, verticalDrop(r) ? topEnd : topEnd + r.height / pm::tan(r.dropAngle)};
 }
 
 // Height added by one ramp at (x, y): rise (x - x0) tan(angle), top, fall.
 double rampHeight(const Ramp& r, double x, double y, int sideX, int sideY) {
   if (!within(y, sideY, r.yMin, r.yMax) || x <= r.x) return 0.0;
   const auto [topStart, topEnd, footEnd] = rampBreaks(r);
-  if (x < topStart) return (x - r.x) * std::tan(r.angle);
+  if (x < topStart) return (x - r.x) * pm::tan(r.angle);
   if (x < topEnd || (x == topEnd && (sideX < 0 || !verticalDrop(r)))) return r.height;
-  if (x < footEnd) return r.height - (x - topEnd) * std::tan(r.dropAngle);
+  if (x < footEnd) return r.height - (x - topEnd) * pm::tan(r.dropAngle);
   return 0.0;
 }
 
@@ -65,7 +66,7 @@ double roughHeight(const RoughPatch& p, double x, double y) {
   const double fade = taper(p.xMin, p.xMax, p.fade, x);
   if (fade == 0.0) return 0.0;
   double h = 0.0;
-  for (const RoughWave& w : p.waves) h += w.amplitude * std::cos(w.kx * x + w.ky * y + w.phase);
+  for (const RoughWave& w : p.waves) h += w.amplitude * pm::cos(w.kx * x + w.ky * y + w.phase);
   return fade * h;
 }
 
@@ -74,7 +75,7 @@ double corrugationHeight(const Corrugation& c, double x, double y, int sideY) {
   if (!within(y, sideY, c.yMin, c.yMax)) return 0.0;
   const double fade = taper(c.xMin, c.xMax, c.fade, x);
   if (fade == 0.0) return 0.0;
-  return fade * 0.5 * c.height * (1.0 - std::cos(2.0 * std::numbers::pi * (x - c.xMin) / c.wavelength));
+  return fade * 0.5 * c.height * (1.0 - pm::cos(2.0 * std::numbers::pi * (x - c.xMin) / c.wavelength));
 }
 
 // A grid line of the mesh; across a step line the height jumps.

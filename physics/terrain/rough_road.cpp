@@ -4,6 +4,7 @@
 #include <random>
 
 #include "terrain/road_surface.h"
+#include "portable_math.h"
 
 namespace bdfcar::terrain {
 
@@ -23,11 +24,11 @@ void makeRoughWaves(RoughPatch& patch) {
   double sumSquares = 0.0;
   for (int i = 0; i < n; ++i) {
     const double t = n > 1 ? static_cast<double>(i) / (n - 1) : 0.5;
-    const double wavelength = patch.wavelengthMin * std::pow(patch.wavelengthMax / patch.wavelengthMin, t);
+    const double wavelength = patch.wavelengthMin * pm::pow(patch.wavelengthMax / patch.wavelengthMin, t);
     const double direction = std::numbers::pi * uniform();
     const double phase = 2.0 * std::numbers::pi * uniform();
     const double k = 2.0 * std::numbers::pi / wavelength;
-    patch.waves.push_back({k * std::cos(direction), k * std::sin(direction), std::sqrt(wavelength), phase});
+    patch.waves.push_back({k * pm::cos(direction), k * pm::sin(direction), std::sqrt(wavelength), phase});
     sumSquares += wavelength;
   }
   const double scale = n > 0 ? patch.rmsHeight * std::sqrt(2.0 / sumSquares) : 0.0;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "terrain/terrain_data.h"
+#include "portable_math.h"
 
 namespace bdfcar::terrain {
 
@@ -49,11 +50,11 @@ void checkGround(const TerrainData& data) {
 }  // namespace
 
 Eigen::Vector3d GroundPiece::directionToWorld(const Eigen::Vector3d& v) const {
-  const double c = std::cos(heading), s = std::sin(heading);
+  const double c = pm::cos(heading), s = pm::sin(heading);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()};
 }
 Eigen::Vector3d GroundPiece::directionToLocal(const Eigen::Vector3d& v) const {
-  const double c = std::cos(heading), s = std::sin(heading);
+  const double c = pm::cos(heading), s = pm::sin(heading);
   return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()};
 }
 Eigen::Vector3d GroundPiece::toWorld(const Eigen::Vector3d& local) const { return directionToWorld(local) + at; }

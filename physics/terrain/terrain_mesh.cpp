@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::terrain {
 
@@ -54,7 +55,7 @@ TriangleMesh withCreaseNormals(const std::vector<Vector3d>& vertices, const Tria
   for (std::size_t f = 0; f < tris.size(); ++f)
     for (int i : tris[f]) faces[fill[i]++] = static_cast<int>(f);
 
-  const double cosCrease = std::cos(creaseAngle);
+  const double cosCrease = pm::cos(creaseAngle);
   TriangleMesh out;
   out.triangles = tris;
   out.materials = std::move(kept);

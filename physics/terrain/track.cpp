@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include "portable_math.h"
 
 namespace bdfcar::terrain {
 
@@ -15,7 +16,7 @@ constexpr double kCurbTaper = 2.0;         // m along which a curb rises from no
 constexpr double kCurbStripe = 1.0;        // m, length of one red or white stripe
 constexpr double kStraightChord = 50.0;    // m, longest chord along a straight
 
-Eigen::Vector2d leftOf(double heading) { return {-std::sin(heading), std::cos(heading)}; }
+Eigen::Vector2d leftOf(double heading) { return {-pm::sin(heading), pm::cos(heading)}; }
 
 double wrapAngle(double a) {
   a = std::remainder(a, 2.0 * std::numbers::pi);
@@ -70,7 +71,7 @@ std::vector<CentreLinePoint> sampleCentreLine(const Track& track) {
         q.p = centre - sign * seg.radius * leftOf(q.heading);
       } else {
         q.heading = start.heading;
-        q.p = start.p + f * seg.length * Eigen::Vector2d(std::cos(start.heading), std::sin(start.heading));
+        q.p = start.p + f * seg.length * Eigen::Vector2d(pm::cos(start.heading), pm::sin(start.heading));
       }
       out.push_back(q);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include "portable_math.h"
 
 namespace bdfcar::tyre {
 
@@ -15,7 +16,7 @@ double sineStep(double x, double x0, double x1) {
   if (x <= x0) return 0.0;
   if (x >= x1) return 1.0;
   const double xi = (x - x0) / (x1 - x0);
-  return xi - std::sin(2 * std::numbers::pi * xi) / (2 * std::numbers::pi);
+  return xi - pm::sin(2 * std::numbers::pi * xi) / (2 * std::numbers::pi);
 }
 
 }  // namespace
@@ -23,12 +24,12 @@ double sineStep(double x, double x0, double x1) {
 PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu) {
   PatchForces out;
   if (!(Fz > 0)) return out;
-  const double tanA = std::tan(alpha);
+  const double tanA = pm::tan(alpha);
   const double S = std::min(1.0, std::sqrt(kappa * kappa + tanA * tanA));
   double U = p.uMax - (p.uMax - p.uMin) * S;
   // Critical slips use U before friction scaling (as the reference codes it).
   const double kappaC = std::abs(U * Fz / (2.0 * p.slipStiffness));
-  const double alphaC = std::atan(3.0 * U * Fz / p.corneringStiffness);
+  const double alphaC = pm::atan(3.0 * U * Fz / p.corneringStiffness);
   U *= std::clamp(mu, 0.1, 1.0) / p.referenceFriction;
   const double UFz = U * Fz;
   if (std::abs(kappa) < kappaC)
@@ -127,17 +128,17 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
     const double dampY = p_.lowSpeedDampingY * vsy / p_.corneringStiffness;
     kappa = beta * (-vsx / denom) + (1.0 - beta) * (next.kappa + dampX);
     tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (next.tanAlpha + dampY);
-    alpha = std::atan(tanAlpha);
+    alpha = pm::atan(tanAlpha);
   } else {
     kappa = -vsx / absVx;
-    alpha = std::atan2(vsy, absVx);
+    alpha = pm::atan2(vsy, absVx);
     next.active = false;  // algebraic slips: no transient state to carry
   }
   PatchForces f = fialaPatchForces(p_, kappa, alpha, Fz, g.friction);
   // Rolling resistance opposes the spin: sign(omega) made smooth below
   // 0.5 rad/s (a locked wheel's omega dithers about zero; a jump there would
   // stop Newton from converging). Exactly +-1 at road speeds.
-  const double My = -sineStep(absVx, 0.125, 0.5) * p_.rollingResistance * Fz * std::tanh(w.spinRate / 0.5);
+  const double My = -sineStep(absVx, 0.125, 0.5) * p_.rollingResistance * Fz * pm::tanh(w.spinRate / 0.5);
 
   out.inContact = true;
   out.deflection = delta;

@@ -7,6 +7,7 @@
 
 #include "integrator/dae_blocks.h"
 #include "multibody/kinematics.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -161,8 +162,8 @@ EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleF
   const Eigen::Matrix3d& R = d.R[ch];
   rep.chassisHeight = d.p[ch].z();
   rep.comHeight = (d.p[ch] + R * v.model.bodies[ch].com).z();
-  rep.roll = std::atan2(R(2, 1), R(2, 2));
-  rep.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
+  rep.roll = pm::atan2(R(2, 1), R(2, 2));
+  rep.pitch = -pm::asin(std::clamp(R(2, 0), -1.0, 1.0));
   for (int w = 0; w < 4; ++w) {
     rep.wheelLoads[w] = forces.wheels()[w].out.Fz;
     rep.totalLoad += rep.wheelLoads[w];

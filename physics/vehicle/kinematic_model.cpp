@@ -15,6 +15,7 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/mass_moments.h"
 #include "vehicle/motion_ratio.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -145,7 +146,7 @@ class LinkageSweep {
 
 // Angles (psi, phi, theta) of M = Rz(psi) Rx(phi) Ry(theta).
 Vec3 zxyAngles(const Mat3& M) {
-  return Vec3(std::atan2(-M(0, 1), M(1, 1)), std::asin(std::clamp(M(2, 1), -1.0, 1.0)), std::atan2(-M(2, 0), M(2, 2)));
+  return Vec3(pm::atan2(-M(0, 1), M(1, 1)), pm::asin(std::clamp(M(2, 1), -1.0, 1.0)), pm::atan2(-M(2, 0), M(2, 2)));
 }
 
 // What the sweep gives one corner: per table component, the samples on the grid.
@@ -413,8 +414,8 @@ KinematicCheck checkAgainstLinkage(const Vehicle& link, LinkageSweep& ls, const 
         wheelPose(kin, dk, w, ck, ak);
         // Both models put the chassis at the same design pose.
         c.wheelCentre = std::max(c.wheelCentre, (cl - ck).norm());
-        c.camber = std::max(c.camber, std::abs(std::asin(al.z()) - std::asin(ak.z())));
-        c.toe = std::max(c.toe, std::abs(std::atan2(-al.x(), al.y()) - std::atan2(-ak.x(), ak.y())));
+        c.camber = std::max(c.camber, std::abs(pm::asin(al.z()) - pm::asin(ak.z())));
+        c.toe = std::max(c.toe, std::abs(pm::atan2(-al.x(), al.y()) - pm::atan2(-ak.x(), ak.y())));
       }
     }
   }

@@ -8,6 +8,7 @@
 #include "multibody/kinematics.h"
 #include "multibody/multibody_dae.h"
 #include "vehicle/equilibrium.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -112,7 +113,7 @@ double roadWheelAnglePerSteer(const Vehicle& v) {
     mb::updatePositions(m, q, d);
     for (int w = 0; w < 2; ++w) {
       const Eigen::Vector3d n = d.R[v.layout.chassis].transpose() * d.R[v.layout.wheels[w].spindle].col(1);
-      angle[k] += 0.5 * std::atan2(-n.x(), n.y());
+      angle[k] += 0.5 * pm::atan2(-n.x(), n.y());
     }
   }
   return (angle[0] - angle[1]) / (2 * steer);

@@ -127,12 +127,17 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
     mb::updatePositions(km, q, dp);
     q(km.bodies[u].qIndex) = s - ds;
     mb::updatePositions(km, q, dm);
+    // The carrier's attitude relative to the chassis over travel (the
+    // chassis is held): its rotation per metre, in the chassis frame.
+    const Mat3 turn = (dp.R[KL.chassis].transpose() * dp.R[u]) * (dm.R[KL.chassis].transpose() * dm.R[u]).transpose();
+    loads.turnPerTravel[w] = Vec3(turn(2, 1) - turn(1, 2), turn(0, 2) - turn(2, 0), turn(1, 0) - turn(0, 1)) / (4 * ds);
     const Vec3 rate3 = contactPoint(kin, dp, w, delta) - contactPoint(kin, dm, w, delta);
     const Vec3 chassisOffset = dp.p[KL.chassis] - dm.p[KL.chassis];  // zero: the chassis is held
     const Vec3 motion = chassisInBase.R.transpose() * (rate3 - chassisOffset);
     const double outward = contact[w].y() > chassisInBase.p.y() ? 1.0 : -1.0;
     rcHeight[w] = 0.5 * outward * motion.y() / motion.z();  // times the track below
   }
+  loads.sprungRest = chassisInBase.R;
   for (int a = 0; a < 2; ++a) {
     const int l = 2 * a, r = 2 * a + 1;
     loads.track[a] = std::abs(contact[l].y() - contact[r].y());
@@ -295,6 +300,24 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
   return out;
 }
 
+void setPlanarRollAxis(Vehicle& planar, double axisHeight) {
+  PlanarLoads& P = *planar.planar;
+  const double shift = axisHeight - P.axisHeight;
+  // The roll centres move with it: the load the axis carries past the
+  // springs is the roll centres' share (the total is the statics').
+  for (double& h : P.rollCentreHeight) h += shift;
+  mb::Body& sprung = planar.model.bodies[planar.layout.chassis];
+  const Vec3 up = Vec3::UnitZ() * shift;  // in the base frame
+  sprung.inParent.origin += up;
+  sprung.inChild.origin += P.sprungRest.transpose() * up;
+  mb::refreshJointFrames(planar.model, planar.layout.chassis);
+  for (int w = 0; w < 4; ++w) {
+    P.basePoint[w] += up;
+    P.sprungPoint[w] += P.sprungRest.transpose() * up;
+  }
+  P.axisHeight = axisHeight;
+}
+
 void setPlanarGround(Vehicle& planar, double groundZ) {
   planar.model.bodies[planar.layout.base].inParent.origin.z() = groundZ;
 }
@@ -310,6 +333,13 @@ std::string describePlanar(const PlanarDerivation& d) {
   std::snprintf(buf, sizeof buf, "  sprung %.1f kg on a roll and pitch axis %.3f m above the ground; wheelbase %.3f m\n",
                 d.sprungMass, P.axisHeight, P.wheelbase);
   o << buf;
+  if (d.kinematicRollGradient != 0) {
+    std::snprintf(buf, sizeof buf,
+                  "  the axis identified from the kinematic rung's steady roll (%.3f deg per m/s^2 at 0.3 of the "
+                  "limit); the instant centres' construction puts it at %.3f m\n",
+                  d.kinematicRollGradient * 180.0 / M_PI, d.geometricAxisHeight);
+    o << buf;
+  }
   const char* axle[2] = {"front", "rear"};
   for (int a = 0; a < 2; ++a) {
     std::snprintf(buf, sizeof buf, "  %s: track %.3f m, roll centre %.3f m\n", axle[a], P.track[a], P.rollCentreHeight[a]);
@@ -320,6 +350,16 @@ std::string describePlanar(const PlanarDerivation& d) {
                   "  %s: static load %.0f N at travel %+.4f m, wheel rate %.0f N/m (%.0f N/m with the tyre), "
                   "damping %.0f N s/m\n",
                   kCornerNames[w], P.staticLoad[w], d.staticTravel[w], d.wheelRate[w], P.rate[w], P.damping[w]);
+    o << buf;
+  }
+  // The linkage's kinematics the rung carries: per 10 mm of bump, the toe
+  // (+ in: a left wheel turning right) and camber (+ top out) from the
+  // carrier's rotation (a left wheel's spin axis points left: a turn about
+  // +z toes it out, about +x tilts its top in).
+  for (int w = 0; w < 4; ++w) {
+    const double side = w % 2 == 0 ? 1.0 : -1.0, per10mm = 0.01 * 180.0 / M_PI;
+    std::snprintf(buf, sizeof buf, "  %s: per 10 mm of bump, toe %+.3f deg, camber %+.3f deg (from the linkage's sweep)\n",
+                  kCornerNames[w], -side * P.turnPerTravel[w].z() * per10mm, -side * P.turnPerTravel[w].x() * per10mm);
     o << buf;
   }
   // Steady roll at 0.5 g: the sprung weight's moment about the roll axis

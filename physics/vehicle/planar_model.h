@@ -39,11 +39,22 @@ struct PlanarDerivation {
   double rollStiffness = 0;             // N m/rad, both axles, corner springs
   double sprungMass = 0;                // kg
   double sprungComHeight = 0;           // m above the ground at rest
+  // The roll and pitch axis: the instant-centre construction's height, and
+  // the steady roll per lateral acceleration it was identified to (the
+  // kinematic rung's; 0: not identified, the construction's axis kept).
+  // scenario/planar_rung.h.
+  double geometricAxisHeight = 0;       // m
+  double kinematicRollGradient = 0;     // rad per m/s^2
 };
 
 // Throws mb::ModelError naming what cannot be derived (see deriveKinematic;
 // also: no unsteered axle to carry the base, no static equilibrium).
 PlanarDerivation derivePlanar(const Vehicle& linkage);
+
+// Moves the planar model's roll and pitch axis (the sprung body's joint and
+// the corner springs' points) and both roll centres by the same height, so
+// that the axis is at this height above the ground.
+void setPlanarRollAxis(Vehicle& planar, double axisHeight);
 
 // Sets the height of the planar model's road plane (the ground at the start).
 void setPlanarGround(Vehicle& planar, double groundZ);

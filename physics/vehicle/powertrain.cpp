@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -28,7 +29,7 @@ double effectiveThrottle(const EngineSpec& e, double w, double throttle) {
 
 double engineFriction(const EngineSpec& e, double w) {
   // tanh over 1 rad/s: the friction of a turning engine, zero at rest.
-  return (e.friction + e.frictionSlope * std::abs(w)) * std::tanh(w);
+  return (e.friction + e.frictionSlope * std::abs(w)) * pm::tanh(w);
 }
 
 double engineTorque(const EngineSpec& e, double w, double throttle) {
@@ -38,7 +39,7 @@ double engineTorque(const EngineSpec& e, double w, double throttle) {
 double clutchTorque(const ClutchSpec& c, double capacity, double deflection, double slip, double h) {
   if (capacity <= 0) return 0.0;
   const double t = c.stiffness * (deflection + h * slip) + c.damping * slip;
-  return capacity * std::tanh(t / capacity);
+  return capacity * pm::tanh(t / capacity);
 }
 
 double advanceClutchDeflection(const ClutchSpec& c, double capacity, double deflection, double slip, double h) {

@@ -6,6 +6,7 @@
 
 #include "multibody/data.h"
 #include "multibody/kinematics.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -59,9 +60,9 @@ void kinematicToPlanar(const Vehicle& kin, const Vehicle& planar, const VectorXd
   const Mat3 rest = sprung.inChild.axes.transpose();  // the sprung body's axes in the base's at zero roll and pitch
   // Rc = Rz(psi) Rx(alpha) Ry(beta) rest.
   const Mat3 N = Rc * rest.transpose();
-  const double psi = std::atan2(-N(0, 1), N(1, 1));
+  const double psi = pm::atan2(-N(0, 1), N(1, 1));
   const Mat3 M = mb::rotZ(-psi) * N;
-  const double alpha = std::atan2(M(2, 1), M(1, 1)), beta = std::atan2(M(0, 2), M(0, 0));
+  const double alpha = pm::atan2(M(2, 1), M(1, 1)), beta = pm::atan2(M(0, 2), M(0, 0));
   const Vec3 joint = mb::pointPosition(d, ch, sprung.inChild.origin);
   const Mat3 Rz = mb::rotZ(psi);
   const Vec3 origin = joint - Rz * sprung.inParent.origin;

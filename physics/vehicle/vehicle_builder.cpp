@@ -23,15 +23,6 @@ Mat3 jointAxes(const JointSpec& j) {
 
 }  // namespace
 
-const char* fidelityName(Fidelity f) {
-  switch (f) {
-    case Fidelity::Linkage: return "linkage";
-    case Fidelity::Kinematic: return "kinematic";
-    case Fidelity::Planar: return "planar";
-  }
-  return "?";
-}
-
 Vehicle buildVehicle(const VehicleSpec& spec) {
   Vehicle out;
   out.spec = spec;

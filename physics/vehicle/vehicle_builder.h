@@ -73,6 +73,14 @@ struct PlanarLoads {
   // and tyre in series): what brings the axle's roll stiffness from the
   // corner springs' to that of (suspension + bar) in series with the tyres.
   std::array<double, 2> barRate{};     // N/m
+  // What the linkage's kinematics do to the wheel's attitude as it travels:
+  // the carrier's rotation per metre of wheel travel at the static travel
+  // (rad/m, chassis frame; toe: bump and roll steer, camber gain, caster
+  // change), applied to the tyre's wheel kinematics with the travel the
+  // corner spring's deflection gives, over the sprung body's own roll and
+  // pitch relative to the base (the wheels ride on the base).
+  std::array<Vec3, 4> turnPerTravel{};
+  Mat3 sprungRest = Mat3::Identity();  // the sprung body's axes in the base frame at zero roll and pitch
 };
 
 // A plain value: copies stay valid (the layout holds indices, no pointers).

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "config/toml_reader.h"
+#include "vehicle/ladder.h"
 #include "vehicle/powertrain_file.h"
 
 namespace bdfcar::vehicle {
@@ -43,6 +44,7 @@ const Range kRackTravel{-1.0, 1.0};                       // m at full steering 
 const Range kSteeringWheelAngle{0.0, 100.0, true, false}; // rad at full steering input
 const Range kDragArea{0.0, 100.0};                        // 0.5 rho Cd A, N s^2/m^2
 const Range kLiftArea{-100.0, 100.0};                     // 0.5 rho Cl A, N s^2/m^2
+const Range kCertificate{1e-6, 1.0};                      // fraction of the linkage's peak
 const Range kResponseTime{0.005, 1.0};                    // s, the steering system's
 const Range kRackSpeed{0.0, 5.0, true, false};            // m/s
 const Range kRackAcceleration{0.0, 1000.0, true, false};  // m/s^2
@@ -81,6 +83,7 @@ class Loader {
   void readWheels();
   void readSteeringAndDriveline();
   void readAppearance();
+  void readCertificate();
   tyre::TyreParams readTyre(Table t);
   tyre::FialaParams readFiala(Table& t);
 
@@ -481,6 +484,17 @@ void Loader::readSteeringAndDriveline() {
 
 }
 
+void Loader::readCertificate() {
+  // One key per derived rung of the ladder (vehicle/ladder.h).
+  auto c = root_.optionalTable("certificate");
+  if (!c) return;
+  for (const RungDescription& r : ladder()) {
+    if (!r.derived || !c->has(r.name)) continue;
+    spec_.certificateRequired[r.name] = c->number(r.name, Dimension::None, kCertificate);
+  }
+  c->finish();
+}
+
 void Loader::readAppearance() {
   auto a = root_.optionalTable("appearance");
   VehicleGeometry& g = spec_.geometry;
@@ -528,6 +542,7 @@ VehicleSpec Loader::load() {
   readAntiRollBars();
   readSteeringAndDriveline();
   readAppearance();
+  readCertificate();
   root_.finish();
   return spec_;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -101,7 +102,7 @@ double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) 
   // Spring-damper on the spin since the wheel last slipped, saturated smoothly
   // at the available torque (a kink would make Newton cycle at the limit).
   const double t = kBrakeStiffness * (c.brakeDeflection + h * spin) + kBrakeDamping * spin;
-  return -c.brakeCapacity * std::tanh(t / c.brakeCapacity);
+  return -c.brakeCapacity * pm::tanh(t / c.brakeCapacity);
 }
 
 void VehicleForces::planarLoads(mb::Data& d) {
@@ -114,6 +115,7 @@ void VehicleForces::planarLoads(mb::Data& d) {
     const Eigen::Vector3d pb = mb::pointPosition(d, base, P.basePoint[w]);
     const double z = up.dot(ps - pb);
     const double zd = up.dot(mb::pointVelocity(d, sprung, P.sprungPoint[w]) - mb::pointVelocity(d, base, P.basePoint[w]));
+    cornerTravel_[w] = -P.suspensionShare[w] * z;
     wheels_[w].cornerSpring = -P.rate[w] * z;
     wheels_[w].cornerDamper = -P.damping[w] * zd;
     const double f = wheels_[w].cornerSpring + wheels_[w].cornerDamper;  // + pushes the body up and the tyre down
@@ -139,6 +141,19 @@ void VehicleForces::planarLoads(mb::Data& d) {
   }
   const double pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
   for (int w = 0; w < 4; ++w) wheels_[w].modelLoad += w < 2 ? -pitch : pitch;
+}
+
+void VehicleForces::planarWheelAttitude(const mb::Data& d, int w, tyre::WheelKinematics& k) const {
+  // The wheel rides on the base; in the linkage it turns with the body's
+  // roll and pitch and, relative to the body, by the carrier's rotation over
+  // its travel (bump and roll steer, camber gain).
+  const PlanarLoads& P = *vehicle_.planar;
+  const Mat3& Rs = d.R[vehicle_.layout.chassis];
+  const Mat3 bodyTurn = Rs * P.sprungRest.transpose() * d.R[vehicle_.layout.base].transpose();
+  const Vec3 travelTurn = Rs * (cornerTravel_[w] * P.turnPerTravel[w]);
+  Vec3 axis = bodyTurn * k.spinAxis;
+  axis += travelTurn.cross(axis);
+  k.spinAxis = axis.normalized();
 }
 
 void VehicleForces::antiRollBars(mb::Data& d) {
@@ -172,7 +187,9 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   for (int w = 0; w < 4; ++w) {
     WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];
-    const tyre::WheelKinematics& k = ks[w] = wheelKinematics(d, w);
+    ks[w] = wheelKinematics(d, w);
+    if (vehicle_.planar) planarWheelAttitude(d, w, ks[w]);
+    const tyre::WheelKinematics& k = ks[w];
     spins[w] = relativeSpin(d, w);
     c.spinRate = k.spinRate;
     c.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));

@@ -101,6 +101,9 @@ class VehicleForces final : public mb::ForceProvider {
   static constexpr double kBrakeDamping = 1.0e3;    // N m s/rad
 
  private:
+  // A planar model's wheel attitude for its tyre (PlanarLoads::turnPerTravel).
+  void planarWheelAttitude(const mb::Data& d, int w, tyre::WheelKinematics& k) const;
+  std::array<double, 4> cornerTravel_{};  // m, a planar model's suspension travel from static (+ bump), per evaluation
   tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double brakeTorque(const WheelContact& c, double relativeSpin, double h) const;

@@ -6,6 +6,7 @@
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/kinematics.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -29,9 +30,9 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   out.com = mb::pointPosition(d, ch, c);
   out.chassisOrigin = d.p[ch];
   out.chassisRotation = R;
-  out.roll = std::atan2(R(2, 1), R(2, 2));
-  out.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
-  out.yaw = std::atan2(R(1, 0), R(0, 0));
+  out.roll = pm::atan2(R(2, 1), R(2, 2));
+  out.pitch = -pm::asin(std::clamp(R(2, 0), -1.0, 1.0));
+  out.yaw = pm::atan2(R(1, 0), R(0, 0));
   const Vec3 vel = mb::pointVelocity(d, ch, c), acc = mb::pointAcceleration(d, ch, c);
   const Vec3 vb = R.transpose() * vel, ab = R.transpose() * acc;
   out.vx = vb.x();
@@ -42,7 +43,7 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   out.yawRate = d.vel[ch].tail<3>().z();
   out.rollRate = d.vel[ch].tail<3>().x();
   out.pitchRate = d.vel[ch].tail<3>().y();
-  out.sideslip = std::atan2(out.vy, out.vx);
+  out.sideslip = pm::atan2(out.vy, out.vx);
   // Ground-plane component normal to the heading.
   Vec3 heading(R(0, 0), R(1, 0), 0.0);
   if (heading.norm() > 1e-9) {
@@ -62,11 +63,11 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     out.driveTorque[w] = wc.driveTorque;
     // Road-wheel steer: heading of the spin axis relative to the chassis, + = left.
     const Vec3 n = R.transpose() * d.R[v.layout.wheels[w].spindle].col(1);
-    out.steerAngle[w] = std::atan2(-n.x(), n.y());
+    out.steerAngle[w] = pm::atan2(-n.x(), n.y());
     // Camber and toe by the SAE convention: + when the wheel's top leans
     // out, + when its front points in (left is +y, right is -y).
     const double outward = w % 2 == 0 ? 1.0 : -1.0;
-    out.camber[w] = -outward * std::asin(std::clamp(n.z(), -1.0, 1.0));
+    out.camber[w] = -outward * pm::asin(std::clamp(n.z(), -1.0, 1.0));
     out.toe[w] = -outward * out.steerAngle[w];
     out.Mz[w] = wc.out.Mz;
     out.travel[w] = suspensionTravel(v, d, w);

@@ -5,6 +5,7 @@
 
 #include "multibody/kinematics.h"
 #include "vehicle/motion_ratio.h"
+#include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
@@ -22,7 +23,7 @@ std::array<double, 2> frontAngles(const Vehicle& planar, double s) {
   std::array<double, 2> a{};
   for (int w = 0; w < 2; ++w) {
     const Vec3 n = d.R[planar.layout.base].transpose() * d.R[planar.layout.wheels[w].spindle].col(1);
-    a[w] = std::atan2(-n.x(), n.y());
+    a[w] = pm::atan2(-n.x(), n.y());
   }
   return a;
 }
@@ -67,7 +68,7 @@ VehicleSheet vehicleSheet(const Vehicle& linkage, const PlanarDerivation& p) {
   } else {
     for (int i = 0; i < 50; ++i) (frontAngles(p.vehicle, 0.5 * (lo + hi))[0] < inner ? lo : hi) = 0.5 * (lo + hi);
     const std::array<double, 2> a = frontAngles(p.vehicle, 0.5 * (lo + hi));
-    const double outerAckermann = std::atan(s.wheelbase / (s.wheelbase / std::tan(a[0]) + s.track[0]));
+    const double outerAckermann = pm::atan(s.wheelbase / (s.wheelbase / pm::tan(a[0]) + s.track[0]));
     s.ackermann = 100 * (a[0] - a[1]) / (a[0] - outerAckermann);
   }
   return s;

@@ -120,6 +120,10 @@ struct VehicleSpec {
   std::optional<PowertrainSpec> powertrain;
   VehicleGeometry geometry;          // for drawing
   std::map<std::string, Vec3> points;  // named hardpoints (left side), for reports
+  // `[certificate]`: the largest worst figure (fraction of the linkage's
+  // peak) each derived rung's certificate may have for this car, by rung
+  // name; the tests hold every shipped file to it (scenario/rung_certificate.h).
+  std::map<std::string, double> certificateRequired;
 };
 
 }  // namespace bdfcar::vehicle
