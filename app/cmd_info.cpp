@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "cli_errors.h"
@@ -90,18 +91,28 @@ void printDerived(const std::string& path, const std::vector<config::Setting>& s
   scene.sourceFile = path;
   scene.vehicleFile = path;
   scene.vehicleSettings = settings;
-  const vehicle::PlanarDerivation p = scenario::derivePlanarRung(scene, linkage);
+  // The planar rung is derived from the kinematic one; a car without one
+  // (every wheel steers) has the kinematic rung alone.
+  std::optional<vehicle::PlanarDerivation> p;
+  std::optional<vehicle::KinematicDerivation> k;
+  try {
+    p = scenario::derivePlanarRung(scene, linkage);
+  } catch (const mb::ModelError&) {
+    if (f == vehicle::Fidelity::Planar) throw;
+    k = vehicle::deriveKinematic(linkage);
+  }
+  const vehicle::KinematicDerivation& kin = p ? p->kinematic : *k;
   if (f == vehicle::Fidelity::Planar) {
-    figures = vehicle::describePlanar(p) + vehicle::describeKinematic(p.kinematic);
-    derived = p.vehicle;
+    figures = vehicle::describePlanar(*p) + vehicle::describeKinematic(kin);
+    derived = p->vehicle;
   } else {
-    figures = vehicle::describeKinematic(p.kinematic);
-    derived = p.kinematic.vehicle;
+    figures = vehicle::describeKinematic(kin);
+    derived = kin.vehicle;
   }
   const vehicle::RungDescription& rung = vehicle::describeRung(f);
   figures += std::string("rung '") + rung.name + "': derived from " + rung.derivedFrom + "\n  models: " + rung.models +
              "\n  leaves out: " + rung.omits + "\n  valid: " + rung.validity + "\n";
-  const scenario::LadderCertificate c = scenario::certifyLadder(scene, linkage, p);
+  const scenario::LadderCertificate c = scenario::certifyLadder(scene, linkage, kin.vehicle, p ? &p->vehicle : nullptr);
   figures += scenario::describeCertificate(c, scene.fidelity.errorBudget);
   for (const auto& [name, bound] : linkage.spec.certificateRequired)
     if (const scenario::RungCertificate* r = c.find(*vehicle::rungByName(name)))

@@ -47,6 +47,50 @@ std::string errorCells(const scenario::RunResult& fine, const scenario::RunResul
   return cells + " | " + fmt("%.2g", 1e3 * roll.rms) + " | " + fmt("%.2f", 1e3 * z.maxAbs);
 }
 
+// `auto` against the linkage at the same step on scenes with relief, a
+// hill and a lap: the budget's quantities, and what the switches did.
+void autoAgainstTheLinkage(std::ostream& md) {
+  md << "\n### `auto` against the linkage on the proving ground and the hard cases\n\n"
+     << "Each scene under `auto` (its certificate and the default 10 % budget) and on the linkage, both at the "
+     << "scene's own step: RMS differences as % of the linkage's peak, or of the certificate's floor where that is "
+     << "larger (0.05 rad/s, 0.5 m/s^2, 0.01 rad: a straight climb has no yaw to speak of; height: the chassis "
+     << "frame's, absolute), "
+     << "the largest height difference, the share of steps on the planar rung, the switches and the largest "
+     << "chassis jump at one (a switch down that would move it more than 5 mm is refused).\n\n"
+     << "| scene | yaw rate | a_y | roll | height | height max (mm) | planar | switches (refused) | jump max (mm) |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const char* file : {"proving_ground/hill_stop.toml", "proving_ground/circuit_lap.toml",
+                           "hard/rough_lane_change.toml", "hard/curb_strike.toml", "hard/braking_in_a_turn.toml"}) {
+    const scenario::ScenarioSpec scene = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
+    scenario::ScenarioSpec linkage = scene;
+    linkage.fidelity = {};
+    const RunSummary ref = runRepeated(linkage, 1), a = runRepeated(withAuto(scene), 1);
+    if (!ref.result.ok || !a.result.ok) {
+      md << "| " << file << " | the run failed: " << (ref.result.ok ? a.result.failure : ref.result.failure) << " ||||||||\n";
+      continue;
+    }
+    const auto diff = [&](const char* c) {
+      return compareAt(column(ref.result.samples, "t"), column(ref.result.samples, c), column(a.result.samples, "t"),
+                       column(a.result.samples, c));
+    };
+    // As the certificate measures: % of the larger of the linkage's peak and
+    // the quantity's floor (a straight climb has no yaw to speak of).
+    const auto percent = [&](const char* c, double floor) {
+      double peak = floor;
+      for (double v : column(ref.result.samples, c)) peak = std::max(peak, std::abs(v));
+      return fmt("%.2f %%", 100 * diff(c).rms / peak);
+    };
+    const auto& m = a.result.stepsPerModel;
+    const double planar = 100.0 * m[2] / std::max(1L, m[0] + m[1] + m[2]);
+    md << "| " << file << " | " << percent("yawrate", 0.05) << " | " << percent("ay", 0.5) << " | "
+       << percent("roll", 0.01) << " | " << fmt("%.3f %%", diff("height").rmsPercent) << " | "
+       << fmt("%.1f", 1e3 * diff("height").maxAbs) << " | " << fmt("%.0f %%", planar) << " | "
+       << a.result.fidelitySwitches << " (" << a.result.fidelity.refused << ") | "
+       << fmt("%.2f", 1e3 * a.result.fidelity.maxJump) << " |\n";
+  }
+  md << "\n";
+}
+
 // Each shipped vehicle's certificate at the scenes' default step (10 ms,
 // BDF2, 2 Newton iterations), and what `auto` takes from it.
 void certificateTables(std::ostream& md) {
@@ -197,6 +241,7 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "kinematic model where it must and on the planar model elsewhere.\n\n";
   command(md, "assets/scenarios/lane_change.toml --fidelity auto");
   certificateTables(md);
+  autoAgainstTheLinkage(md);
   // Overlay: the lane change, linkage converged against each rung at 10 ms.
   // The series: the converged linkage, then each timed row (linkage, kinematic, planar, auto at 10 ms).
   const std::vector<std::string> series = {"linkage, 1 ms converged", "linkage, 10 ms", "kinematic, 10 ms",

@@ -21,6 +21,7 @@ std::vector<double> column(const std::vector<vehicle::VehicleSample>& s, const s
     else if (name == "roll") out.push_back(x.roll);
     else if (name == "z") out.push_back(x.com.z());
     else if (name == "y") out.push_back(x.com.y());
+    else if (name == "height") out.push_back(x.chassisOrigin.z());  // the chassis frame, absolute
     else if (name == "FzFL") out.push_back(x.Fz[0]);
     else throw std::logic_error("unknown column " + name);
   }

@@ -152,13 +152,14 @@ ManoeuvreError compare(const std::string& name, const RunResult& ref, const RunR
 
 // The scene's vehicle and integrator, and the rungs themselves (a rung
 // derived from another car, as in an ablation, is another certificate).
-std::string certificateKey(const ScenarioSpec& scene, const vehicle::PlanarDerivation& derived) {
+std::string certificateKey(const ScenarioSpec& scene, const vehicle::Vehicle& kinematic, const vehicle::Vehicle* planar) {
   std::ostringstream k;
   k.precision(17);
-  k << vehicle::derivationFingerprint(derived.kinematic.vehicle) << ' ' << vehicle::derivationFingerprint(derived.vehicle)
+  k << vehicle::derivationFingerprint(kinematic) << ' ' << (planar ? vehicle::derivationFingerprint(*planar) : 0)
     << ' ' << scene.vehicleFile;
   // The planar rung's own derived figures (the fingerprint covers its bodies and joints).
-  if (const auto& P = derived.vehicle.planar) {
+  if (planar && planar->planar) {
+    const auto& P = planar->planar;
     for (int w = 0; w < 4; ++w)
       k << ' ' << P->staticLoad[w] << ' ' << P->rate[w] << ' ' << P->damping[w] << ' ' << P->turnPerTravel[w].transpose();
     k << ' ' << P->rollCentreHeight[0] << ' ' << P->rollCentreHeight[1] << ' ' << P->axisHeight << ' ' << P->barRate[0]
@@ -178,9 +179,14 @@ std::string certificateKey(const ScenarioSpec& scene, const vehicle::PlanarDeriv
 
 LadderCertificate certifyLadder(const ScenarioSpec& scene, const vehicle::Vehicle& linkage,
                                 const vehicle::PlanarDerivation& derived) {
+  return certifyLadder(scene, linkage, derived.kinematic.vehicle, &derived.vehicle);
+}
+
+LadderCertificate certifyLadder(const ScenarioSpec& scene, const vehicle::Vehicle& linkage,
+                                const vehicle::Vehicle& kinematic, const vehicle::Vehicle* planar) {
   static std::mutex mutex;
   static std::map<std::string, LadderCertificate> known;
-  const std::string key = certificateKey(scene, derived);
+  const std::string key = certificateKey(scene, kinematic, planar);
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto it = known.find(key); it != known.end()) return it->second;
@@ -188,7 +194,8 @@ LadderCertificate certifyLadder(const ScenarioSpec& scene, const vehicle::Vehicl
   LadderCertificate c;
   c.step = scene.integrator.step;
   const double limit = tyre::peakFriction(linkage.wheel(0).tyre, kRoadFriction) * kG;
-  const vehicle::Vehicle* rungs[] = {&derived.kinematic.vehicle, &derived.vehicle};
+  std::vector<const vehicle::Vehicle*> rungs = {&kinematic};
+  if (planar) rungs.push_back(planar);
   for (const vehicle::Vehicle* v : rungs) c.rungs.push_back(RungCertificate{v->fidelity, {}, 0, "", ""});
   for (const ScenarioSpec& s : certificateBattery(scene, linkage)) {
     const RunResult ref = runOnModel(s, linkage, linkage);

@@ -63,6 +63,9 @@ std::vector<ScenarioSpec> certificateBattery(const ScenarioSpec& scene, const ve
 // integrator (each derived rung a pure function of them).
 LadderCertificate certifyLadder(const ScenarioSpec& scene, const vehicle::Vehicle& linkage,
                                 const vehicle::PlanarDerivation& derived);
+// The same for a car whose planar rung cannot be derived (planar: null).
+LadderCertificate certifyLadder(const ScenarioSpec& scene, const vehicle::Vehicle& linkage,
+                                const vehicle::Vehicle& kinematic, const vehicle::Vehicle* planar);
 
 // The rungs `auto` uses for a scene, from the certificate and the budget
 // (fraction): the full rung it switches up to (kinematic where its

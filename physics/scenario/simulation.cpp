@@ -129,16 +129,25 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
   if (spec.fidelity.automatic) {
     // Both derived rungs from one derivation (the planar model is the
     // kinematic one's), certified against the linkage for this car at this
-    // step; `auto` uses those within the budget.
-    vehicle::PlanarDerivation p = derive([&](const vehicle::Vehicle& v) { return derivePlanarRung(spec, v); });
-    w->certificate = certifyLadder(spec, w->vehicle, p);
+    // step; `auto` uses those within the budget. A car without a planar rung
+    // (every wheel steers) is certified on the kinematic rung alone.
+    std::optional<vehicle::PlanarDerivation> p;
+    std::optional<vehicle::KinematicDerivation> k;
+    try {
+      p = derivePlanarRung(spec, w->vehicle);
+    } catch (const mb::ModelError& e) {
+      k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
+      w->autoRefusals.push_back(std::string("planar not derived: ") + e.what());
+    }
+    vehicle::KinematicDerivation& kin = p ? p->kinematic : *k;
+    w->certificate = certifyLadder(spec, w->vehicle, kin.vehicle, p ? &p->vehicle : nullptr);
     const AutoRungChoice choice = chooseAutoRungs(*w->certificate, spec.fidelity.errorBudget);
-    w->autoRefusals = choice.refusals;
+    w->autoRefusals.insert(w->autoRefusals.end(), choice.refusals.begin(), choice.refusals.end());
     w->planarLevel = choice.planarLevel;
     if (choice.full == vehicle::Fidelity::Kinematic) {
-      w->vehicle = std::move(p.kinematic.vehicle);
-      w->kinematicCheck = p.kinematic.check;
-      if (choice.planar) w->planar = std::move(p.vehicle);
+      w->vehicle = std::move(kin.vehicle);
+      w->kinematicCheck = kin.check;
+      if (choice.planar && p) w->planar = std::move(p->vehicle);
     }
   } else if (rung == vehicle::Fidelity::Kinematic) {
     vehicle::KinematicDerivation k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
