@@ -15,6 +15,14 @@ namespace bdfcar::pm {
 
 inline double sin(double x) { return Sleef_sind1_u10purec(x); }
 inline double cos(double x) { return Sleef_cosd1_u10purec(x); }
+// sin and cos of one angle at the cost of one: x -> (sin x, cos x).
+struct SinCos {
+  double s, c;
+};
+inline SinCos sincos(double x) {
+  const Sleef_double_2 r = Sleef_sincosd1_u10purec(x);
+  return {r.x, r.y};
+}
 inline double tan(double x) { return Sleef_tand1_u10purec(x); }
 inline double asin(double x) { return Sleef_asind1_u10purec(x); }
 inline double acos(double x) { return Sleef_acosd1_u10purec(x); }

@@ -98,8 +98,9 @@ void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
     case JointType::Universal: {  // v = (alpha_dot about parent x, beta_dot about child y)
       Sj.resize(6, 2);
       Sj.setZero();
-      Sj(3, 0) = pm::cos(q[1]);
-      Sj(5, 0) = pm::sin(q[1]);
+      const pm::SinCos r = pm::sincos(q[1]);
+      Sj(3, 0) = r.c;
+      Sj(5, 0) = r.s;
       Sj(4, 1) = 1;
       break;
     }
@@ -127,8 +128,9 @@ Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v) {
   if (type == JointType::Universal) {
     // d/dt of the first column (cos b, 0, sin b) times alpha_dot.
     const double ab = v[0] * v[1];
-    c(3) = -pm::sin(q[1]) * ab;
-    c(5) = pm::cos(q[1]) * ab;
+    const pm::SinCos r = pm::sincos(q[1]);
+    c(3) = -r.s * ab;
+    c(5) = r.c * ab;
   }
   return c;
 }
@@ -160,7 +162,7 @@ void jointRetract(JointType type, const double* q, const double* dq, double* out
     }
     case JointType::Planar: {
       // As the free joint: the translation increment is in the child frame.
-      const double c = pm::cos(q[2]), s = pm::sin(q[2]);
+      const auto [s, c] = pm::sincos(q[2]);
       out[0] = q[0] + c * dq[0] - s * dq[1];
       out[1] = q[1] + s * dq[0] + c * dq[1];
       out[2] = q[2] + dq[2];
@@ -199,7 +201,7 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
       break;
     }
     case JointType::Planar: {
-      const double c = pm::cos(base[2]), s = pm::sin(base[2]);
+      const auto [s, c] = pm::sincos(base[2]);
       const double dx = q[0] - base[0], dy = q[1] - base[1];
       out[0] = c * dx + s * dy;
       out[1] = -s * dx + c * dy;
@@ -242,7 +244,7 @@ void jointLocalRate(JointType type, const double* delta, const double* v, double
     }
     case JointType::Planar: {
       // d/dt Rz(a0)^T (p - p0) = Rz(a - a0) v_lin.
-      const double c = pm::cos(delta[2]), s = pm::sin(delta[2]);
+      const auto [s, c] = pm::sincos(delta[2]);
       out[0] = c * v[0] - s * v[1];
       out[1] = s * v[0] + c * v[1];
       out[2] = v[2];

@@ -22,7 +22,7 @@ Vec6 jointToBody(const Body& b, const Vec6& m) {
 
 // Rotation about the joint axis by angle t from the rest orientation.
 Mat3 rotateAboutAxis(const Body& b, double t) {
-  const double s = pm::sin(t), c = pm::cos(t);
+  const auto [s, c] = pm::sincos(t);
   return b.restRotation + s * b.rodrigues1 + (1.0 - c) * b.rodrigues2;
 }
 
@@ -54,8 +54,9 @@ void tabulatedPose(const Model& model, const Body& b, const double* c, Data& d, 
   SplineGrid::Sample& s = d.tableSamples[b.table];
   table.grid.eval(c[0], b.nv > 1 ? c[1] : 0.0, s);
   const double psi = s.f[3], phi = s.f[4], theta = s.f[5];
-  const double sp = pm::sin(psi), cp = pm::cos(psi);
-  const double sf = pm::sin(phi), cf = pm::cos(phi), st = pm::sin(theta), ct = pm::cos(theta);
+  const auto [sp, cp] = pm::sincos(psi);
+  const auto [sf, cf] = pm::sincos(phi);
+  const auto [st, ct] = pm::sincos(theta);
   Mat3 M;  // Rz(psi) Rx(phi) Ry(theta), from the sines and cosines once
   M << cp * ct - sp * sf * st, -sp * cf, cp * st + sp * sf * ct,  //
       sp * ct + cp * sf * st, cp * cf, sp * st - cp * sf * ct,    //

@@ -14,8 +14,9 @@ Mat3 expSO3(const Vec3& w) {
     b = 0.5 - t2 / 24.0;
   } else {
     const double t = std::sqrt(t2);
-    a = pm::sin(t) / t;
-    b = (1.0 - pm::cos(t)) / t2;
+    const pm::SinCos r = pm::sincos(t);
+    a = r.s / t;
+    b = (1.0 - r.c) / t2;
   }
   return Mat3::Identity() + a * W + b * (W * W);
 }
@@ -41,7 +42,8 @@ Mat3 rightJacobianInverse(const Vec3& theta) {
     c = 1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 * (1.0 / 1209600.0)));
   } else {
     const double t = std::sqrt(t2);
-    c = 1.0 / t2 - (1.0 + pm::cos(t)) / (2.0 * t * pm::sin(t));
+    const pm::SinCos r = pm::sincos(t);
+    c = 1.0 / t2 - (1.0 + r.c) / (2.0 * t * r.s);
   }
   return Mat3::Identity() + 0.5 * W + c * (W * W);
 }
@@ -56,24 +58,25 @@ Quat expQuat(const Vec3& w) {
     return Quat(c, s * w.x(), s * w.y(), s * w.z());
   }
   const double t = std::sqrt(t2);
-  const double s = pm::sin(0.5 * t) / t;
-  return Quat(pm::cos(0.5 * t), s * w.x(), s * w.y(), s * w.z());
+  const pm::SinCos h = pm::sincos(0.5 * t);
+  const double s = h.s / t;
+  return Quat(h.c, s * w.x(), s * w.y(), s * w.z());
 }
 
 Mat3 rotX(double a) {
-  const double c = pm::cos(a), s = pm::sin(a);
+  const auto [s, c] = pm::sincos(a);
   Mat3 m;
   m << 1, 0, 0, 0, c, -s, 0, s, c;
   return m;
 }
 Mat3 rotY(double a) {
-  const double c = pm::cos(a), s = pm::sin(a);
+  const auto [s, c] = pm::sincos(a);
   Mat3 m;
   m << c, 0, s, 0, 1, 0, -s, 0, c;
   return m;
 }
 Mat3 rotZ(double a) {
-  const double c = pm::cos(a), s = pm::sin(a);
+  const auto [s, c] = pm::sincos(a);
   Mat3 m;
   m << c, -s, 0, s, c, 0, 0, 0, 1;
   return m;
