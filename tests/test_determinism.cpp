@@ -5,6 +5,7 @@
 // or not, fails here; when it is meant, regenerate the file with
 // scripts/update-golden.sh and say why in the commit.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -24,7 +25,9 @@ const std::string kSource = BDFCAR_SOURCE_DIR;
 const std::string kGolden = kSource + "/tests/data/golden_hashes.txt";
 
 std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("bdfcar_golden_" + name)).string();
+  // Per process: ctest runs the golden cases in several processes at once
+  // (Golden.UnderTunables_*), which must not write each other's files.
+  return (std::filesystem::temp_directory_path() / ("bdfcar_golden_" + std::to_string(getpid()) + "_" + name)).string();
 }
 
 // FNV-1a (64 bits) of a telemetry file, which must not be trivially short.
@@ -81,6 +84,7 @@ TEST(Golden, JTurnTelemetryHash) {
   o.keepSamples = false;
   ASSERT_TRUE(scenario::runScenario(sim, o).ok);
   checkGolden("jturn", fileHash(o.telemetryPath));
+  std::filesystem::remove(o.telemetryPath);
 }
 
 TEST(Golden, ReplayedDriveTelemetryHash) {
@@ -97,4 +101,5 @@ TEST(Golden, ReplayedDriveTelemetryHash) {
     EXPECT_NEAR(drive.time(), 3.0, 1e-9);
   }
   checkGolden("drive_replay", fileHash(so.telemetryPath));
+  std::filesystem::remove(so.telemetryPath);
 }
