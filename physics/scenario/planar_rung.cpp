@@ -3,7 +3,6 @@
 #include <cmath>
 #include <map>
 #include <mutex>
-#include <sstream>
 
 #include "scenario/rung_runs.h"
 #include "tyre/tyre_model.h"
@@ -48,21 +47,15 @@ void identifyRollAxis(const ScenarioSpec& scene, const vehicle::Vehicle& linkage
 vehicle::PlanarDerivation derivePlanarRung(const ScenarioSpec& scene, const vehicle::Vehicle& linkage) {
   static std::mutex mutex;
   static std::map<std::string, vehicle::PlanarDerivation> known;
-  std::ostringstream key;
-  key.precision(17);
-  key << vehicle::derivationFingerprint(linkage) << ' ' << scene.vehicleFile;
-  for (const config::Setting& x : scene.vehicleSettings) key << '|' << x.key << '=' << x.value;
-  const integ::BdfOptions& b = scene.integrator.bdf;
-  key << '|' << static_cast<int>(scene.integrator.method) << ' ' << scene.integrator.step << ' ' << scene.tick << ' '
-      << b.order << ' ' << b.newtonIterations << ' ' << b.jacobianEvery << ' ' << b.refreshWhenNotContracting;
+  const std::string key = std::to_string(vehicle::derivationFingerprint(linkage)) + '|' + rungRunsKey(scene);
   {
     std::lock_guard<std::mutex> lock(mutex);
-    if (auto it = known.find(key.str()); it != known.end()) return it->second;
+    if (auto it = known.find(key); it != known.end()) return it->second;
   }
   vehicle::PlanarDerivation p = vehicle::derivePlanar(linkage);
   identifyRollAxis(scene, linkage, p);
   std::lock_guard<std::mutex> lock(mutex);
-  known.emplace(key.str(), p);
+  known.emplace(key, p);
   return p;
 }
 

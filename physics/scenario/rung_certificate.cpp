@@ -156,7 +156,7 @@ std::string certificateKey(const ScenarioSpec& scene, const vehicle::Vehicle& ki
   std::ostringstream k;
   k.precision(17);
   k << vehicle::derivationFingerprint(kinematic) << ' ' << (planar ? vehicle::derivationFingerprint(*planar) : 0)
-    << ' ' << scene.vehicleFile;
+    << ' ';
   // The planar rung's own derived figures (the fingerprint covers its bodies and joints).
   if (planar && planar->planar) {
     const auto& P = planar->planar;
@@ -165,14 +165,7 @@ std::string certificateKey(const ScenarioSpec& scene, const vehicle::Vehicle& ki
     k << ' ' << P->rollCentreHeight[0] << ' ' << P->rollCentreHeight[1] << ' ' << P->axisHeight << ' ' << P->barRate[0]
       << ' ' << P->barRate[1];
   }
-  for (const config::Setting& s : scene.vehicleSettings) k << '|' << s.key << '=' << s.value;
-  const IntegratorSpec& i = scene.integrator;
-  const integ::BdfOptions& b = i.bdf;
-  k << '|' << static_cast<int>(i.method) << ' ' << i.step << ' ' << scene.tick << ' ' << b.order << ' '
-    << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
-    << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
-    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp);
-  return k.str();
+  return k.str() + '|' + rungRunsKey(scene);
 }
 
 }  // namespace

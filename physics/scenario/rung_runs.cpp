@@ -1,5 +1,7 @@
 #include "scenario/rung_runs.h"
 
+#include <sstream>
+
 #include "scenario/simulation.h"
 
 namespace bdfcar::scenario {
@@ -36,6 +38,20 @@ SignalSpec signalTable(std::vector<double> times, std::vector<double> values) {
   s.times = std::move(times);
   s.values = std::move(values);
   return s;
+}
+
+std::string rungRunsKey(const ScenarioSpec& scene) {
+  std::ostringstream k;
+  k.precision(17);
+  k << scene.vehicleFile;
+  for (const config::Setting& s : scene.vehicleSettings) k << '|' << s.key << '=' << s.value;
+  const IntegratorSpec& i = scene.integrator;
+  const integ::BdfOptions& b = i.bdf;
+  k << '|' << static_cast<int>(i.method) << ' ' << i.step << ' ' << scene.tick << ' ' << b.order << ' '
+    << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
+    << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
+    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp);
+  return k.str();
 }
 
 RunResult runOnModel(const ScenarioSpec& s, const vehicle::Vehicle& linkage, const vehicle::Vehicle& model) {

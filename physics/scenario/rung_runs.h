@@ -3,6 +3,7 @@
 // settings, run on any model derived from the linkage, and its steady state.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "scenario/run.h"
@@ -20,6 +21,11 @@ ScenarioSpec rungRunBase(const ScenarioSpec& scene);
 // A steering ramp to a road-wheel angle (rad) in 0.2 s from t = 0.5 s.
 SignalSpec roadWheelRamp(double angle);
 SignalSpec signalTable(std::vector<double> times, std::vector<double> values);
+
+// What the rungs' runs depend on besides the models: the scene's vehicle
+// file and settings, its integrator settings and tick (a key for the
+// per-process caches of the derivation and the certificate).
+std::string rungRunsKey(const ScenarioSpec& scene);
 
 // The run of s on `model` (the linkage itself or a rung derived from it);
 // a failure (also one that throws) is a RunResult with ok = false.
