@@ -3,6 +3,7 @@
 // run's own telemetry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -86,4 +87,55 @@ TEST(DriverPaths, PathDriverRetracesARunsPath) {
   const double L = std::max(5.0, 0.3 * ra.samples.front().speed);
   std::printf("largest distance from the first run's path: %.3f m (bound L^2 k = %.3f m)\n", worst, L * L * curvature);
   EXPECT_LT(worst, L * L * curvature);
+}
+
+// The grid search (driver_paths.h) against the scan of every segment, written
+// here again: a figure eight that crosses itself (ties between the two
+// branches at the crossing) with segments of uneven length, queried on, near
+// and far off the path (outside the grid: the scan itself). The target
+// points must agree bit for bit: the driver's steering, hence the telemetry,
+// must not depend on how the nearest point was found.
+TEST(DriverPaths, GridSearchGivesTheScansNearestPointBitForBit) {
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i < 397; ++i) {
+    const double t = 2 * M_PI * i / 397.0 + 0.002 * std::sin(7.0 * i);
+    pts.emplace_back(400 * std::sin(t), 150 * std::sin(2 * t));
+  }
+  const scenario::PolylinePath path(pts, true);
+  pts.push_back(pts.front());
+  std::vector<double> s(pts.size(), 0.0);
+  for (size_t i = 1; i < pts.size(); ++i) s[i] = s[i - 1] + (pts[i] - pts[i - 1]).norm();
+  auto reference = [&](const Eigen::Vector2d& q, double L) {
+    double best = 1e300, sBest = 0;
+    for (size_t i = 0; i + 1 < pts.size(); ++i) {
+      const Eigen::Vector2d d = pts[i + 1] - pts[i];
+      const double u = std::clamp((q - pts[i]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      const double dist = (pts[i] + u * d - q).squaredNorm();
+      if (dist < best) best = dist, sBest = s[i] + u * (s[i + 1] - s[i]);
+    }
+    double at = sBest + L;
+    at -= s.back() * std::floor(at / s.back());
+    const size_t i = std::min<size_t>(std::upper_bound(s.begin(), s.end(), at) - s.begin(), s.size() - 1);
+    const size_t a = i == 0 ? 0 : i - 1;
+    const double u = (at - s[a]) / (s[a + 1] - s[a]);
+    return Eigen::Vector2d(pts[a] + u * (pts[a + 1] - pts[a]));
+  };
+  uint64_t state = 12345;
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  int checked = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double spread = k < 3000 ? 30.0 : 3000.0;  // near the path, then far off it
+    const size_t i = static_cast<size_t>(uniform() * 396);
+    const Eigen::Vector2d q = pts[i] + spread * Eigen::Vector2d(uniform() - 0.5, uniform() - 0.5);
+    const Eigen::Vector2d a = path.target(q.x(), q.y(), 12.0), b = reference(q, 12.0);
+    ASSERT_EQ(a.x(), b.x()) << "at (" << q.x() << ", " << q.y() << ")";
+    ASSERT_EQ(a.y(), b.y()) << "at (" << q.x() << ", " << q.y() << ")";
+    ++checked;
+  }
+  // The crossing itself (the origin): both branches are at distance zero.
+  EXPECT_EQ(path.target(0, 0, 5.0), reference(Eigen::Vector2d(0, 0), 5.0));
+  EXPECT_EQ(checked, 4000);
 }

@@ -7,6 +7,9 @@
 #include <cmath>
 
 #include "scenario/check.h"
+#include "scenario/fidelity_policy.h"
+#include "terrain/bullet/bullet_terrain.h"
+#include "terrain/terrain_file.h"
 #include "scenario/run.h"
 #include "vehicle/rung_mapping.h"
 
@@ -219,6 +222,81 @@ TEST(FidelityAuto, SwitchesMoveTheChassisByLessThanTheLimit) {
   EXPECT_GE(r.fidelitySwitches, 2);
   EXPECT_LE(r.fidelity.maxJump, scenario::FidelityPolicy::kMaxJump);
   EXPECT_LE(r.fidelity.maxTurn, scenario::FidelityPolicy::kMaxTurn);
+}
+
+// The road scan's shortcut (Terrain::levelOver) against the rays it stands
+// for: over the proving ground (a ground with the circuit's mesh, curbs,
+// a gravel trap, a slope, a heightfield section), boxes along the circuit's
+// centre line and its edges and boxes anywhere. Wherever the terrain vouches
+// for a box, every ray on a 9 x 9 grid over it must find the road plane;
+// and it must vouch for most of the centre line (else it buys nothing),
+// never for a box over a curb or the rough section.
+TEST(FidelityAuto, LevelShortcutNeverVouchesForGroundTheRaysFindOffTheRoadPlane) {
+  const terrain::TerrainData data = terrain::loadTerrain(std::string(BDFCAR_SOURCE_DIR) + "/assets/terrain/proving_ground.toml");
+  const std::unique_ptr<terrain::Terrain> ground = terrain::makeTerrain(data);
+  const std::array<tyre::TyreParams, 4> tyres{tyre::FialaParams{}, tyre::FialaParams{}, tyre::FialaParams{},
+                                              tyre::FialaParams{}};
+  const std::array<Eigen::Vector2d, 4> offsets{Eigen::Vector2d(1.2, 0.8), Eigen::Vector2d(1.2, -0.8),
+                                               Eigen::Vector2d(-1.3, 0.8), Eigen::Vector2d(-1.3, -0.8)};
+  const scenario::FidelityPolicy policy(*ground, 0.0, offsets, tyres, INFINITY);
+  terrain::WorldCentreLine line;
+  ASSERT_TRUE(terrain::findCentreLine(data, "circuit", line));
+  auto query = [](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+    terrain::Terrain::LevelQuery q;
+    q.lo = lo;
+    q.hi = hi;
+    q.zTop = scenario::FidelityPolicy::kRayAbove;
+    q.zBottom = q.zTop - scenario::FidelityPolicy::kRayLength;
+    q.height = 0.0;
+    q.tolerance = scenario::FidelityPolicy::kRoadHeight;
+    q.minNormalZ = std::cos(scenario::FidelityPolicy::kRoadSlope);
+    return q;
+  };
+  auto raysAllLevel = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+        if (!policy.level(lo + Eigen::Vector2d(i / 8.0 * (hi.x() - lo.x()), j / 8.0 * (hi.y() - lo.y())))) return false;
+    return true;
+  };
+  int vouched = 0, onCentre = 0, centreBoxes = 0, refusedByRays = 0;
+  uint64_t state = 99;
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  const size_t n = line.points.size();
+  for (size_t k = 0; k < 3000; ++k) {
+    Eigen::Vector2d centre;
+    double half;
+    bool onLine = false;
+    if (k < 2000) {  // along the line, across the road to beyond its edges
+      const size_t i = static_cast<size_t>(uniform() * (n - 1));
+      const Eigen::Vector2d a = line.points[i], b = line.points[(i + 1) % n];
+      const Eigen::Vector2d t = (b - a).normalized(), across(-t.y(), t.x());
+      onLine = k < 1000;
+      centre = a + uniform() * (b - a) + (onLine ? 0.0 : (uniform() - 0.5) * 16.0) * across;
+      half = onLine ? 1.0 + uniform() : 0.5 + 2.0 * uniform();
+    } else {  // anywhere on the ground
+      centre = Eigen::Vector2d(-100 + 1200 * uniform(), -400 + 700 * uniform());
+      half = 0.5 + 3.0 * uniform();
+    }
+    const Eigen::Vector2d lo = centre - Eigen::Vector2d::Constant(half), hi = centre + Eigen::Vector2d::Constant(half);
+    const bool shortcut = ground->levelOver(query(lo, hi));
+    const bool rays = raysAllLevel(lo, hi);
+    if (shortcut) {
+      ++vouched;
+      ASSERT_TRUE(rays) << "vouched for the box around (" << centre.x() << ", " << centre.y() << ") +-" << half;
+    } else if (!rays) {
+      ++refusedByRays;
+    }
+    if (onLine) {
+      ++centreBoxes;
+      onCentre += shortcut;
+    }
+  }
+  EXPECT_GT(onCentre, centreBoxes / 2) << "the shortcut vouches for too little of the circuit's centre line";
+  EXPECT_GT(refusedByRays, 100) << "the boxes never met a curb, slope or rough ground: the test tests nothing";
+  EXPECT_GT(vouched, 0);
 }
 
 }  // namespace

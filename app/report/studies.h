@@ -27,10 +27,11 @@ Difference compareAt(const std::vector<double>& refTime, const std::vector<doubl
 
 struct RunSummary {
   scenario::RunResult result;
-  double wallPerStepUs = 0;  // median over repeats of wall time per manoeuvre step
+  double wallPerStepUs = 0;  // median over repeats of wall time per manoeuvre step, no telemetry
 };
 
-// Runs a scenario `repeats` times (timing only differs) and keeps the last result.
+// Runs a scenario `repeats` times without samples (as `bdfcar run` with no
+// telemetry: the timing), then once more with them (the result kept).
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats);
 
 scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,

@@ -229,12 +229,12 @@ EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual
 }
 
 // x -= Z (I + E^T Z)^-1 E^T x: the Woodbury correction of x = A^-1 b.
-void BdfIntegrator::applyLowRankUpdate(Vec& x) {
+void BdfIntegrator::applyLowRankUpdate(Vec& x, int rows) {
   if (!lowRank_) return;
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) w_(k) = x(fast[k]);
   w2_ = sLu_.solve(w_);
-  x.noalias() -= Z_ * w2_;
+  x.head(rows).noalias() -= Z_.topRows(rows) * w2_;
 }
 
 double BdfIntegrator::correctionNorm() const {
@@ -285,7 +285,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     rhs_.head(nv).noalias() -= Fa_ * tmpV_;
     rhs_.tail(nc) = -r_.phi;
     sol_.noalias() = Ainv_ * rhs_;
-    applyLowRankUpdate(sol_);
+    applyLowRankUpdate(sol_, nv + nc);
     dq_ = sol_.head(nv);
     dlam_ = sol_.tail(nc) / (hp * hp);
     // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
@@ -295,8 +295,10 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     c_.noalias() = -(J_ * dv_);
     c_.noalias() -= dx_.phiDotQ * dq_;
     c_ -= r_.phiDot;
-    e_.noalias() = Ainv_.rightCols(nc) * c_;
-    applyLowRankUpdate(e_);
+    // Only the velocity rows of the solution are used (the fast columns
+    // index velocities, so the low-rank update needs no more).
+    e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
+    applyLowRankUpdate(e_, nv);
     dv_ += e_.head(nv);
     // (3.14): the same for the accelerations and g + g_q dq + g_v dv + Phi_q da = 0.
     da_ = cj * (dv_ + rhoV_);
@@ -304,8 +306,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     c_.noalias() -= dx_.phiDDotQ * dq_;
     c_.noalias() -= dx_.phiDDotV * dv_;
     c_ -= r_.phiDDot;
-    e_.noalias() = Ainv_.rightCols(nc) * c_;
-    applyLowRankUpdate(e_);
+    e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
+    applyLowRankUpdate(e_, nv);
     da_ += e_.head(nv);
     counters_.solves += 3;
     ++counters_.newtonIterations;

@@ -92,7 +92,9 @@ class BdfIntegrator final : public Integrator {
   void factorize(double hPrime);
   // base: the residual at the iterate (the Newton iteration's own).
   EvalStatus refreshFastColumns(double t, double hPrime, const Residual& base, Message& msg);
-  void applyLowRankUpdate(Vec& x);
+  // x = A^-1 b for the factorized A -> the refreshed matrix's solution, in its
+  // first `rows` rows (the velocity solves use only the first nv).
+  void applyLowRankUpdate(Vec& x, int rows);
   void startFromPredictor();
   enum class NewtonOutcome { Converged, NotContracting, Failed };
   // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.

@@ -13,8 +13,32 @@ FidelityPolicy::FidelityPolicy(const terrain::Terrain& terrain, double roadZ,
 
 bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
   const terrain::Hit h =
-      terrain_.castRay(Eigen::Vector3d(xy.x(), xy.y(), roadZ_ + 1.0), -Eigen::Vector3d::UnitZ(), 2.0);
+      terrain_.castRay(Eigen::Vector3d(xy.x(), xy.y(), roadZ_ + kRayAbove), -Eigen::Vector3d::UnitZ(), kRayLength);
   return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= pm::cos(kRoadSlope);
+}
+
+// The box around the scan's points from `first` to `last` (linear in the
+// distance: the ends' points bound them), asked of the terrain at once. A
+// rounding margin around it; what the terrain cannot vouch for is scanned
+// ray by ray.
+template <class Point>
+bool FidelityPolicy::levelAhead(double first, double last, const Point& point) const {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+  for (const Eigen::Vector2d& o : offsets_)
+    for (const double d : {first, last}) {
+      lo = lo.cwiseMin(point(o, d));
+      hi = hi.cwiseMax(point(o, d));
+    }
+  terrain::Terrain::LevelQuery q;
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(1e-6);
+  q.lo = lo - margin;
+  q.hi = hi + margin;
+  q.zTop = roadZ_ + kRayAbove;
+  q.zBottom = roadZ_ + kRayAbove - kRayLength;
+  q.height = roadZ_;
+  q.tolerance = kRoadHeight;
+  q.minNormalZ = pm::cos(kRoadSlope);
+  return terrain_.levelOver(q);
 }
 
 void FidelityPolicy::refuse(State& s) {
@@ -37,11 +61,17 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
   const double reach = s.odometer + std::max(kMinLookAhead, std::abs(speed) * kLookAhead);
   const Eigen::Vector2d heading(pm::cos(yaw), pm::sin(yaw)), left(-heading.y(), heading.x());
   if (terrain_.levelEverywhere()) s.scanned = reach;  // a level plane: nothing to find
+  auto scanPoint = [&](const Eigen::Vector2d& o, double d) {
+    return Eigen::Vector2d(com + o.x() * heading + o.y() * left + (d - s.odometer) * heading);
+  };
+  const double first = std::max(s.scanned, s.odometer);
+  if (first <= reach && levelAhead(first, reach, scanPoint)) {
+    // The terrain vouches for the whole stretch: the scan's positions, no rays.
+    for (double d = first; d <= reach; d += kScanStep) s.scanned = d + kScanStep;
+  }
   for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
-    for (const Eigen::Vector2d& o : offsets_) {
-      const Eigen::Vector2d p = com + o.x() * heading + o.y() * left + (d - s.odometer) * heading;
-      if (!level(p)) s.fullUntil = std::max(s.fullUntil, d + kMargin);
-    }
+    for (const Eigen::Vector2d& o : offsets_)
+      if (!level(scanPoint(o, d))) s.fullUntil = std::max(s.fullUntil, d + kMargin);
     s.scanned = d + kScanStep;
   }
   bool saturated = false;  // or a wheel in the air, or off the road plane, or beyond the certified range

@@ -8,7 +8,10 @@
 //    (kRoadSlope), or no ground, is a stretch that needs heave, roll and
 //    pitch of the base, up to kMargin past it. The road is scanned once: a
 //    tick scans only what has come into range since the last one; a terrain
-//    that is one level plane is not scanned at all.
+//    that is one level plane is not scanned at all, and a stretch the
+//    terrain vouches for as a whole (Terrain::levelOver: a ground's plane
+//    and its meshes' triangles there all level) costs one tree query, not a
+//    ray per wheel every kScanStep. The decisions are the rays' either way.
 //  - The ground under each wheel now (the contact planes of the last step)
 //    must be the road plane too: a car standing on a hill or a curb is not
 //    on the road plane, whatever the scan says of the road ahead.
@@ -76,8 +79,15 @@ class FidelityPolicy {
   // what the lower rung has not got: heave, travels).
   static constexpr double kMaxJump = 0.005;  // m
   static constexpr double kMaxTurn = 0.01;   // rad
+  // level()'s ray: down from this far above the road plane, this long.
+  static constexpr double kRayAbove = 1.0;   // m
+  static constexpr double kRayLength = 2.0;  // m
 
  private:
+  // Whether the terrain vouches for the road being level under every scan
+  // point from `first` to `last` (point(offset, distance)); false: scan by rays.
+  template <class Point>
+  bool levelAhead(double first, double last, const Point& point) const;
   const terrain::Terrain& terrain_;
   double roadZ_;
   std::array<Eigen::Vector2d, 4> offsets_;

@@ -1,4 +1,5 @@
 // The analytic plane: the reference every other terrain is tested against.
+#include <algorithm>
 #include <cmath>
 
 #include "terrain/terrain.h"
@@ -26,6 +27,22 @@ Hit PlaneTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& di
   h.normal = normal_;
   h.distance = s;
   return h;
+}
+
+// Linear in x and y: within the tolerance at the box's corners is within it
+// everywhere over the box (a margin for the rays' rounding). The rays then
+// meet it inside their span, which reaches past the tolerance.
+bool PlaneTerrain::levelOver(const LevelQuery& q) const {
+  if (!(normal_.z() >= q.minNormalZ) || !(normal_.z() > 0.0)) return false;
+  constexpr double kMargin = 1e-9;  // m
+  const double reach = std::min(q.zTop - q.height, q.height - q.zBottom);
+  if (!(q.tolerance < reach)) return false;
+  for (int k = 0; k < 4; ++k) {
+    const double x = k & 1 ? q.hi.x() : q.lo.x(), y = k & 2 ? q.hi.y() : q.lo.y();
+    const double z = point_.z() - (normal_.x() * (x - point_.x()) + normal_.y() * (y - point_.y())) / normal_.z();
+    if (!(std::abs(z - q.height) <= q.tolerance - kMargin)) return false;
+  }
+  return true;
 }
 
 }  // namespace bdfcar::terrain

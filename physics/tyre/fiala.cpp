@@ -21,31 +21,37 @@ double sineStep(double x, double x0, double x1) {
 
 }  // namespace
 
-PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu) {
+// The law written in tan(alpha): the combined slip and H take the tangent,
+// and |alpha| <= alpha_c is |tan alpha| <= tan alpha_c = 3 U Fz / C_alpha
+// (alpha within +-pi/2), so the evaluation needs neither tan nor atan.
+PatchForces fialaPatchForcesTan(const FialaParams& p, double kappa, double tanA, double Fz, double mu) {
   PatchForces out;
   if (!(Fz > 0)) return out;
-  const double tanA = pm::tan(alpha);
   const double S = std::min(1.0, std::sqrt(kappa * kappa + tanA * tanA));
   double U = p.uMax - (p.uMax - p.uMin) * S;
   // Critical slips use U before friction scaling (as the reference codes it).
   const double kappaC = std::abs(U * Fz / (2.0 * p.slipStiffness));
-  const double alphaC = pm::atan(3.0 * U * Fz / p.corneringStiffness);
+  const double tanAlphaC = 3.0 * U * Fz / p.corneringStiffness;
   U *= std::clamp(mu, 0.1, 1.0) / p.referenceFriction;
   const double UFz = U * Fz;
   if (std::abs(kappa) < kappaC)
     out.Fx = p.slipStiffness * kappa;
   else
     out.Fx = sgn(kappa) * (UFz - std::abs(UFz * UFz / (4.0 * kappa * p.slipStiffness)));
-  if (std::abs(alpha) <= alphaC) {
+  if (std::abs(tanA) <= tanAlphaC) {
     const double H = 1.0 - p.corneringStiffness * std::abs(tanA) / (3.0 * UFz);
     const double H3 = H * H * H;
-    out.Fy = -UFz * (1.0 - H3) * sgn(alpha);
-    out.Mz = UFz * p.width * (1.0 - H) * H3 * sgn(alpha);
+    out.Fy = -UFz * (1.0 - H3) * sgn(tanA);
+    out.Mz = UFz * p.width * (1.0 - H) * H3 * sgn(tanA);
   } else {
-    out.Fy = -UFz * sgn(alpha);
+    out.Fy = -UFz * sgn(tanA);
     out.Mz = 0.0;
   }
   return out;
+}
+
+PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu) {
+  return fialaPatchForcesTan(p, kappa, pm::tan(alpha), Fz, mu);
 }
 
 constexpr double FialaTyre::kContactSmoothing;
@@ -100,7 +106,7 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   const double absVx = std::abs(vx);
   // Slips: exact above lowSpeedBlend1, transient below, blended in between.
   const double beta = highSpeedWeight(p_, absVx);
-  double kappa, tanAlpha, alpha;
+  double kappa, tanAlpha;
   SlipState next = prev;
   if (beta < 1.0) {
     // Backward Euler over the step from the last accepted transient slips
@@ -128,13 +134,12 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
     const double dampY = p_.lowSpeedDampingY * vsy / p_.corneringStiffness;
     kappa = beta * (-vsx / denom) + (1.0 - beta) * (next.kappa + dampX);
     tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (next.tanAlpha + dampY);
-    alpha = pm::atan(tanAlpha);
   } else {
     kappa = -vsx / absVx;
-    alpha = pm::atan2(vsy, absVx);
+    tanAlpha = vsy / absVx;
     next.active = false;  // algebraic slips: no transient state to carry
   }
-  PatchForces f = fialaPatchForces(p_, kappa, alpha, Fz, g.friction);
+  PatchForces f = fialaPatchForcesTan(p_, kappa, tanAlpha, Fz, g.friction);
   // Rolling resistance opposes the spin: sign(omega) made smooth below
   // 0.5 rad/s (a locked wheel's omega dithers about zero; a jump there would
   // stop Newton from converging). Exactly +-1 at road speeds.
@@ -152,7 +157,7 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   out.My = My;
   out.Mz = f.Mz;
   out.kappa = kappa;
-  out.alpha = alpha;
+  out.tanAlpha = tanAlpha;
   out.vx = vx;
   out.vsx = vsx;
   out.vsy = vsy;

@@ -48,7 +48,8 @@ struct TyreOutput {
   // Contact-frame diagnostics (telemetry).
   Vec3 contactPoint = Vec3::Zero();
   double Fx = 0, Fy = 0, Fz = 0, My = 0, Mz = 0;
-  double kappa = 0, alpha = 0;      // slips used by the force law
+  double kappa = 0, tanAlpha = 0;   // slips used by the force law (the slip angle's tangent)
+  double slipAngle() const;         // alpha, rad (atan tanAlpha: for telemetry, off the step's path)
   double deflection = 0;            // vertical tyre deflection delta, m
   double vx = 0, vsx = 0, vsy = 0;  // wheel-centre forward speed and slip velocities, m/s
   SlipState slipState;              // transient slips at the end of this evaluation

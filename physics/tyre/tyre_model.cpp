@@ -2,7 +2,11 @@
 
 #include <algorithm>
 
+#include "portable_math.h"
+
 namespace bdfcar::tyre {
+
+double TyreOutput::slipAngle() const { return pm::atan(tanAlpha); }
 
 double unloadedRadius(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.unloadedRadius; }, p);

@@ -56,7 +56,7 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     out.Fz[w] = wc.out.Fz;
     out.Fx[w] = wc.out.Fx;
     out.Fy[w] = wc.out.Fy;
-    out.alpha[w] = wc.out.alpha;
+    out.alpha[w] = wc.out.slipAngle();
     out.kappa[w] = wc.out.kappa;
     out.inContact[w] = wc.out.inContact;
     out.spinRate[w] = wc.spinRate;

@@ -56,6 +56,7 @@ class GroundTerrain final : public Terrain {
  public:
   explicit GroundTerrain(const TerrainData& data);
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
+  bool levelOver(const LevelQuery& q) const override;
 
  private:
   std::unique_ptr<Terrain> plane_;
@@ -109,6 +110,34 @@ Hit GroundTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& d
   for (const PlacedPiece& p : pieces_)
     if (p.covers(plane.point)) return best;
   return plane;
+}
+
+// A ray meets the plane or a piece (castRay above): level over the box when
+// the plane is, and every piece whose box overlaps the rays' has only level
+// surfaces there (asked in its own frame: the query's box turned into it,
+// the heights less its own). A piece turns about z only: its normals' z
+// are the world's.
+bool GroundTerrain::levelOver(const LevelQuery& q) const {
+  if (!plane_->levelOver(q)) return false;
+  const Eigen::Vector3d lo(q.lo.x(), q.lo.y(), q.zBottom), hi(q.hi.x(), q.hi.y(), q.zTop);
+  for (const PlacedPiece& p : pieces_) {
+    if ((hi.array() < p.lo.array()).any() || (lo.array() > p.hi.array()).any()) continue;
+    LevelQuery local = q;
+    Eigen::Vector2d a = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), b = -a;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d c = p.placement.toLocal(Eigen::Vector3d(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), 0.0));
+      a = a.cwiseMin(c.head<2>());
+      b = b.cwiseMax(c.head<2>());
+    }
+    const double dz = p.placement.at.z();
+    local.lo = a;
+    local.hi = b;
+    local.zTop = q.zTop - dz;
+    local.zBottom = q.zBottom - dz;
+    local.height = q.height - dz;
+    if (!p.terrain->surfacesLevelOver(local)) return false;
+  }
+  return true;
 }
 
 }  // namespace

@@ -23,6 +23,10 @@ class PatchedFriction final : public Terrain {
     }
     return h;
   }
+  // The patches change friction, not the shape.
+  bool levelEverywhere() const override { return surface_->levelEverywhere(); }
+  bool levelOver(const LevelQuery& q) const override { return surface_->levelOver(q); }
+  bool surfacesLevelOver(const LevelQuery& q) const override { return surface_->surfacesLevelOver(q); }
 
  private:
   std::unique_ptr<Terrain> surface_;

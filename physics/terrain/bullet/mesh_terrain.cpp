@@ -3,6 +3,7 @@
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 
+#include <cmath>
 #include <vector>
 
 #include "terrain/bullet/bullet_shapes.h"
@@ -16,6 +17,7 @@ class MeshTerrain final : public Terrain {
  public:
   explicit MeshTerrain(const TerrainData& data);
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
+  bool surfacesLevelOver(const LevelQuery& q) const override;
 
  private:
   // Bullet keeps pointers into these two arrays: they outlive the shapes below.
@@ -46,6 +48,38 @@ Hit MeshTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& dir
                             // and the arrays, so concurrent queries on one terrain are safe.
                             shape_->performRaycast(&nearest, a, b);
                           });
+}
+
+// Every triangle whose box the tree finds overlapping the query's box: level
+// when its three corners are within the tolerance (so is every point of it)
+// and its normal, as a ray's hit reports it (ray_segment.cpp: the winding's
+// cross product, made unit, turned up), is within the slope.
+class LevelTriangles final : public btTriangleCallback {
+ public:
+  explicit LevelTriangles(const Terrain::LevelQuery& q) : q_(q) {}
+  void processTriangle(btVector3* t, int, int) override {
+    if (!level) return;
+    constexpr double kMargin = 1e-9;  // m, for the rays' rounding
+    for (int k = 0; k < 3; ++k)
+      if (!(std::abs(t[k].z() - q_.height) <= q_.tolerance - kMargin)) {
+        level = false;
+        return;
+      }
+    const btVector3 n = (t[1] - t[0]).cross(t[2] - t[0]);
+    if (n.length2() == 0.0) return;  // degenerate: never hit by a ray
+    const Eigen::Vector3d unit = Eigen::Vector3d(n.x(), n.y(), n.z()).normalized();
+    if (!(std::abs(unit.z()) >= q_.minNormalZ)) level = false;
+  }
+  bool level = true;
+
+ private:
+  const Terrain::LevelQuery& q_;
+};
+
+bool MeshTerrain::surfacesLevelOver(const LevelQuery& q) const {
+  LevelTriangles check(q);
+  shape_->processAllTriangles(&check, btVector3(q.lo.x(), q.lo.y(), q.zBottom), btVector3(q.hi.x(), q.hi.y(), q.zTop));
+  return check.level;
 }
 
 }  // namespace
