@@ -68,22 +68,37 @@ bench_table() {
     echo "over the 500 steps between. Command: \`valgrind --tool=callgrind build/app/bdfcar run"
     echo "assets/scenarios/jturn.toml --vehicle assets/vehicles/paper.toml --duration 6\` (and 1)."
     echo
-    echo "| vehicle | instructions per 10 ms step |"
-    echo "|---|---|"
+    echo "Beside each: its share of the same vehicle's linkage (one run each, same binary), the target"
+    echo "of issue 25 where it sets one, and the real-time factor \`bdfcar run\` prints (no telemetry;"
+    echo "median of 5 runs of the 4 s J-turn, wall time: this machine's, not steady)."
+    echo
+    echo "| vehicle | instructions per 10 ms step | of the linkage's | target | real-time factor |"
+    echo "|---|---|---|---|---|"
     # The vehicle file, then the models derived from it (section 5b): what a
     # scene that does not need the linkage saves per step; `auto` includes its
     # scan of the road ahead and its switches.
-    for run in "paper linkage" "sedan linkage" "paper kinematic" "sedan kinematic" "sedan planar" "sedan auto"; do
+    declare -A linkageIr
+    for run in "paper linkage <=70000" "sedan linkage <=100000" "paper kinematic -" "sedan kinematic <=25000" \
+               "sedan planar <=6000" "sedan auto -"; do
       set -- $run
-      v=$1 f=$2
+      v=$1 f=$2 target=$3
       ir() {
         valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f.$1" "$build/app/bdfcar" run \
           assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" --duration "$1" 2>&1 |
           awk '/Collected/ { print $4 }'
       }
+      rtf() {
+        for _ in 1 2 3 4 5; do
+          "$build/app/bdfcar" run assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" 2>&1 |
+            sed -nE 's/.*real-time factor ([0-9]+).*/\1/p'
+        done | sort -n | sed -n 3p
+      }
       label="$v.toml"
       [ "$f" != linkage ] && label="$v.toml, \`--fidelity $f\`"
-      echo "| $label | $(( ($(ir 6) - $(ir 1)) / 500 )) |"
+      perStep=$(( ($(ir 6) - $(ir 1)) / 500 ))
+      [ "$f" = linkage ] && linkageIr[$v]=$perStep
+      share=$(awk -v a="$perStep" -v b="${linkageIr[$v]}" 'BEGIN { printf "%.2f", a / b }')
+      echo "| $label | $perStep | $share | $target | $(rtf) |"
     done
     # Telemetry at every step (a CSV row of 52 columns per 10 ms step): the
     # stepping thread pays for the sample, the writer thread formats the row;
@@ -118,6 +133,21 @@ bench_table() {
     echo "general_matrix_vector_product is the back-substitution: products with the stored inverse of"
     echo "the eq. 3.8 matrix and with the Jacobian blocks; evaluateJacobian (finite differences of the"
     echo "residual, every 200 steps) is amortised; the rest of newton is the residual."
+    echo
+    echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
+    echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the generic"
+    echo "multibody passes, the back-substitution and the tyres, none of them dominant."
+    echo
+    echo "| function | instructions per step | share |"
+    echo "|---|---|---|"
+    selfIr() {
+      callgrind_annotate --auto=no --threshold=100 "$1" 2> /dev/null | sed 's/(anonymous namespace)/{anonymous}/g' |
+        sed -nE 's/^ *([0-9,]+) +\([ 0-9.%]+\) +[^:]*:([^ (<]*).*/\2 \1/p' | tr -d ',' |
+        awk '{ a[$1] += $2 } END { for (k in a) print k, a[k] }'
+    }
+    join <(selfIr "$tmp/cg.sedan.planar.6" | sort) <(selfIr "$tmp/cg.sedan.planar.1" | sort) |
+      awk '{ d = ($2 - $3) / 500; tot += d; row[$1] = d } END { for (k in row) if (row[k] > 0.02 * tot) printf "%d %s %.1f\n", row[k], k, 100 * row[k] / tot }' |
+      sort -rn | awk '{ printf "| %s | %d | %s %% |\n", $2, $1, $3 }'
   else
     echo "(skipped: valgrind is not installed)"
   fi

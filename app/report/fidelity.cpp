@@ -64,7 +64,7 @@ void autoAgainstTheLinkage(std::ostream& md) {
     const scenario::ScenarioSpec scene = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
     scenario::ScenarioSpec linkage = scene;
     linkage.fidelity = {};
-    const RunSummary ref = runRepeated(linkage, 1), a = runRepeated(withAuto(scene), 1);
+    const RunSummary ref = runRepeated(linkage, 0), a = runRepeated(withAuto(scene), 0);
     if (!ref.result.ok || !a.result.ok) {
       md << "| " << file << " | the run failed: " << (ref.result.ok ? a.result.failure : ref.result.failure) << " ||||||||\n";
       continue;
@@ -152,7 +152,7 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "share of steps on the planar model and its switches.\n\n"
      << "Each rung at 10 ms with the default policy (2 Newton iterations, Jacobian every 200 steps), and the "
      << "kinematic rung converged (1 ms, Newton to tolerance, Jacobian every step: its modelling error alone), "
-     << "against the linkage converged at 1 ms; sedan.toml. Wall time per manoeuvre step (median of " << repeats
+     << "against the linkage converged at 1 ms; sedan.toml. Wall time per manoeuvre step, no telemetry (median of " << repeats
      << "); RMS differences of yaw rate and lateral acceleration (as % of the linkage's peak on the manoeuvres "
      << "with a yaw response, absolute on the others), roll RMS (mrad) and the largest difference of the centre "
      << "of mass height (mm).\n\n"
@@ -197,7 +197,7 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
     };
     bool first = true;
     for (const Row& row : rows) {
-      const RunSummary r = runRepeated(row.spec, row.timed ? repeats : 1);
+      const RunSummary r = runRepeated(row.spec, row.timed ? repeats : 0);
       std::string label = row.label;
       if (row.spec.fidelity.automatic && r.result.ok) {
         const auto& m = r.result.stepsPerModel;

@@ -29,7 +29,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
      << "as the files say). *Default*: bdfcar's policy (when Newton stops contracting: the wheel-spin columns of "
      << "the Jacobian refreshed by a rank-4 update, Newton on to tolerance with them, then a split step; "
      << "docs/DESIGN.md, integrator policy); *published*: the paper's fixed count alone (`--as-published`). "
-     << "Wall time per step: the mean (median of " << repeats << " runs, samples kept at every step) and each "
+     << "Wall time per step: the mean (median of " << repeats << " runs, no telemetry) and each "
      << "step's p50 / p99 / max (us, the last run); refreshed / rescued / split steps; the difference to the "
      << "same case converged at 1 ms: RMS of yaw rate and lateral acceleration (absolute: a straight run has no "
      << "peak to divide by), largest difference of the centre of mass height; and the file's [check].\n\n"

@@ -82,7 +82,7 @@ void provingGroundLap(std::ostream& md, int repeats) {
      << "model chosen by the scene (`auto`). Lap time " << fmt("%.1f", lapTime(a.samples)) << " s. Steps on "
      << "the linkage / kinematic / planar model: " << a.stepsPerModel[0] << " / " << a.stepsPerModel[1] << " / "
      << a.stepsPerModel[2] << " (" << a.fidelitySwitches << " switches: the kinematic model where the road "
-     << "ahead has curbs). Median over " << repeats << " runs of the wall time per step: "
+     << "ahead has curbs). Median over " << repeats << " runs of the wall time per step (no telemetry): "
      << fmt("%.1f", scene.wallPerStepUs) << " us, against " << fmt("%.1f", linkage.wallPerStepUs)
      << " us for the same lap on the linkage throughout (ratio "
      << fmt("%.2f", scene.wallPerStepUs / linkage.wallPerStepUs) << "); per step p50 / p99 / max "

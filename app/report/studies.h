@@ -31,7 +31,8 @@ struct RunSummary {
 };
 
 // Runs a scenario `repeats` times without samples (as `bdfcar run` with no
-// telemetry: the timing), then once more with them (the result kept).
+// telemetry: the timing; none for 0), then once more with them (the result
+// kept).
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats);
 
 scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,
