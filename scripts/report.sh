@@ -114,8 +114,8 @@ bench_table() {
     }
     read -r main6 writer6 <<< "$(irOut 6 | xargs)"
     read -r main1 writer1 <<< "$(irOut 1 | xargs)"
-    echo "| paper.toml with \`--out\` (a telemetry row every step): the stepping thread | $(( (main6 - main1) / 500 )) |"
-    echo "| ... and the telemetry writer's thread (formatting the row) | $(( (writer6 - writer1) / 500 )) |"
+    echo "| paper.toml with \`--out\` (a telemetry row every step): the stepping thread | $(( (main6 - main1) / 500 )) | | | |"
+    echo "| ... and the telemetry writer's thread (formatting the row) | $(( (writer6 - writer1) / 500 )) | | | |"
     echo
     echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"
     echo "BdfIntegrator::step over the run, settling included; \`--toggle-collect\` on that function):"
