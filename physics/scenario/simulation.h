@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -136,6 +137,14 @@ class Simulation {
   // restored to the state, so both continue bit for bit alike.
   RunState save();
   void restore(const RunState& s);
+  // The same as bytes (run_state_bytes.h). restoreBytes throws
+  // RunStateBytesError for bytes that are no run state, or one that does
+  // not fit this simulation (another vehicle, rung count or model size),
+  // and leaves the simulation as it was.
+  std::vector<char> saveBytes();
+  void restoreBytes(const std::vector<char>& bytes);
+  // Why a run state does not fit this simulation (nullopt: it fits).
+  std::optional<std::string> misfit(const RunState& s) const;
 
   double time() const { return integrator_->current().t; }
   // The rung driving now (0: world().vehicle; 1: world().planar under
