@@ -4,19 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <Eigen/Geometry>
-#include <Eigen/QR>
 #include <stdexcept>
 
-#include "integrator/bdf.h"
-#include "integrator/explicit.h"
 #include "multibody/kinematics.h"
-#include "multibody/model_error.h"
-#include "terrain/bullet/bullet_terrain.h"
-#include "terrain/terrain_file.h"
-#include "scenario/planar_rung.h"
 #include "vehicle/motion_ratio.h"
-#include "vehicle/rung_mapping.h"
-#include "vehicle/vehicle_file.h"
 #include "portable_math.h"
 
 namespace bdfcar::scenario {
@@ -35,13 +26,6 @@ SignalValue RackSignal::at(double t) const {
   return {gain_ * segment.steer(t), gain_ * segment.rate(t), gain_ * segment.a};
 }
 
-bool RunState::operator==(const RunState& o) const {
-  return integrator == o.integrator && forces == o.forces && rack == o.rack && speedIntegral == o.speedIntegral &&
-         follower == o.follower && input.steer == o.input.steer && input.throttle == o.input.throttle &&
-         input == o.input && transmission == o.transmission && scriptedDriver == o.scriptedDriver && airborne == o.airborne &&
-         rung == o.rung && fidelity == o.fidelity;
-}
-
 std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
   switch (s.kind) {
     case SignalSpec::Kind::None: return std::make_unique<ConstantSignal>(0.0);
@@ -57,10 +41,6 @@ std::unique_ptr<Signal> makeSignal(const SignalSpec& s) {
   return std::make_unique<ConstantSignal>(0.0);
 }
 
-double vehicleWidth(const vehicle::Vehicle& v) {
-  const auto& g = v.spec.geometry;
-  return std::max(g.trackFront, g.trackRear) + g.wheelWidth;
-}
 
 namespace {
 
@@ -77,102 +57,7 @@ double driveLimit(const vehicle::Vehicle& v) {
   return v.spec.maxDriveTorque > 0 ? v.spec.maxDriveTorque : std::numeric_limits<double>::infinity();
 }
 
-std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
-  if (spec.terrainFile.empty())
-    return std::make_unique<terrain::PlaneTerrain>(Eigen::Vector3d::Zero(),
-                                                   Eigen::Vector3d(-spec.groundGrade, 0.0, 1.0).normalized());
-  return terrain::makeTerrain(terrain::loadTerrain(spec.terrainFile));
-}
-
 }  // namespace
-
-namespace {
-
-// What every world needs besides its vehicle: the step against the tick, the
-// terrain, the planar road plane, the course.
-void finishWorld(World& w) {
-  const ScenarioSpec& spec = w.spec;
-  w.stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
-  if (w.stepsPerTick == 0)
-    throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
-                             " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
-  w.terrain = loadGround(spec);
-  // The planar model's road is the level plane through the ground at the start.
-  const terrain::Hit g = w.terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
-  if (w.vehicle.fidelity == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w.vehicle, g.hit ? g.point.z() : 0.0);
-  if (w.planar) vehicle::setPlanarGround(*w.planar, g.hit ? g.point.z() : 0.0);
-  if (spec.course.iso3888) w.course = makeIso3888Course(vehicleWidth(w.vehicle), spec.course.startX,
-                                                     std::isnan(spec.course.centreY) ? spec.startY : spec.course.centreY, spec.course.part);
-}
-
-}  // namespace
-
-std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
-  auto w = std::make_shared<World>();
-  w->spec = spec;
-  if (stepsPerTick(spec.tick, spec.integrator.step) == 0) {
-    finishWorld(*w);  // throws, naming the step and the tick
-  }
-  w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile, spec.vehicleSettings));
-  // Steering in engineering units becomes the normalised input, from the linkage's scales.
-  w->spec.steering = normalisedSteering(spec.steering, w->vehicle);
-  const vehicle::Fidelity rung = spec.fidelity.suspension;
-  // A derived model names the vehicle file and the rung the scenario asked for.
-  auto derive = [&](auto derivation) {
-    try {
-      return derivation(w->vehicle);
-    } catch (const mb::ModelError& e) {
-      throw mb::ModelError(spec.vehicleFile + ": " + e.what() + " (the scenario asks for [fidelity] suspension = " +
-                           (spec.fidelity.automatic ? "auto" : vehicle::fidelityName(rung)) + ")");
-    }
-  };
-  if (spec.fidelity.automatic) {
-    // Both derived rungs from one derivation (the planar model is the
-    // kinematic one's), certified against the linkage for this car at this
-    // step; `auto` uses those within the budget. A car without a planar rung
-    // (every wheel steers) is certified on the kinematic rung alone.
-    std::optional<vehicle::PlanarDerivation> p;
-    std::optional<vehicle::KinematicDerivation> k;
-    try {
-      p = derivePlanarRung(spec, w->vehicle);
-    } catch (const mb::ModelError& e) {
-      k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
-      w->autoRefusals.push_back(std::string("planar not derived: ") + e.what());
-    }
-    vehicle::KinematicDerivation& kin = p ? p->kinematic : *k;
-    w->certificate = certifyLadder(spec, w->vehicle, kin.vehicle, p ? &p->vehicle : nullptr);
-    const AutoRungChoice choice = chooseAutoRungs(*w->certificate, spec.fidelity.errorBudget);
-    w->autoRefusals.insert(w->autoRefusals.end(), choice.refusals.begin(), choice.refusals.end());
-    w->planarLevel = choice.planarLevel;
-    if (choice.full == vehicle::Fidelity::Kinematic) {
-      w->vehicle = std::move(kin.vehicle);
-      w->kinematicCheck = kin.check;
-      if (choice.planar && p) w->planar = std::move(p->vehicle);
-    }
-  } else if (rung == vehicle::Fidelity::Kinematic) {
-    vehicle::KinematicDerivation k = derive([](const vehicle::Vehicle& v) { return vehicle::deriveKinematic(v); });
-    w->vehicle = std::move(k.vehicle);
-    w->kinematicCheck = k.check;
-  } else if (rung == vehicle::Fidelity::Planar) {
-    vehicle::PlanarDerivation p = derive([&](const vehicle::Vehicle& v) { return derivePlanarRung(spec, v); });
-    w->vehicle = std::move(p.vehicle);
-    w->kinematicCheck = p.kinematic.check;
-  }
-  finishWorld(*w);
-  return w;
-}
-
-std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle::Vehicle& linkage,
-                                        vehicle::Vehicle model) {
-  auto w = std::make_shared<World>();
-  w->spec = spec;
-  w->spec.fidelity = FidelitySpec{};
-  w->spec.fidelity.suspension = model.fidelity;
-  w->spec.steering = normalisedSteering(spec.steering, linkage);
-  w->vehicle = std::move(model);
-  finishWorld(*w);
-  return w;
-}
 
 namespace {
 // The scripted steering; one that does not start at zero is ramped in during settling.
@@ -246,113 +131,6 @@ Simulation::Simulation(std::shared_ptr<const World> world)
 }
 
 Simulation::~Simulation() = default;
-
-Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
-  Rung r;
-  r.vehicle = &veh;
-  vehicle::TerrainContactOptions contact;
-  contact.raysPerWheel = spec().raysPerWheel;
-  r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
-  r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
-  r.dae->addForceProvider(r.forces.get());
-  // A wheel's spin column of the Jacobian is dominated by its tyre's slip
-  // stiffness, which collapses when the tyre saturates (a rough road flips
-  // a tyre between the regimes from one step to the next): the integrator
-  // refreshes these columns alone when Newton stalls.
-  std::vector<int> spins;
-  for (const vehicle::WheelLayout& w : veh.layout.wheels) spins.push_back(w.spinV);
-  r.dae->setFastColumns(std::move(spins));
-  // Every driver of a vehicle model is the rack's: the rack itself and, in a
-  // derived model, the rack travel of each steered corner's table.
-  for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
-  r.integrator = makeIntegrator(*r.dae);
-  r.scratch = mb::makeData(veh.model);
-  return r;
-}
-
-std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(mb::MultibodyDae& dae) const {
-  const IntegratorSpec& is = spec().integrator;
-  if (is.method == IntegratorMethod::Bdf) return std::make_unique<integ::BdfIntegrator>(dae, is.bdf);
-  integ::ExplicitOptions o = is.explicitMethod;
-  o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
-  return std::make_unique<integ::ExplicitIntegrator>(dae, o);
-}
-
-void Simulation::activate(int rung) {
-  active_ = rung;
-  forces_ = rungs_[rung].forces.get();
-  dae_ = rungs_[rung].dae.get();
-  integrator_ = rungs_[rung].integrator.get();
-}
-
-Simulation::ChassisPose Simulation::chassisPose(int rung, const integ::Vec& q) {
-  Rung& r = rungs_[rung];
-  mb::updatePositions(r.vehicle->model, q, r.scratch);
-  const int ch = r.vehicle->layout.chassis;  // the sprung body of the planar model
-  return {r.scratch.p[ch], r.scratch.R[ch]};
-}
-
-bool Simulation::switchRung(int rung) {
-  if (rung == active_) return true;
-  if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
-  const integ::SolutionPoint from = integrator_->current();
-  Eigen::VectorXd q, v;
-  if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, from.q, from.v, q, v);
-  else vehicle::planarToKinematic(*world_->planar, world_->vehicle, from.q, from.v, q, v);
-  // A switch never moves the chassis: what the mapping drops (heave, the
-  // travels) must be what the lower rung would have anyway. Up, the mapping
-  // copies the sprung body's pose (a jump there would be a bug, and staying
-  // on a rung outside its validity is no option: it is measured, not refused).
-  const ChassisPose a = chassisPose(active_, from.q), b = chassisPose(rung, q);
-  const double jump = (b.p - a.p).norm();
-  const Eigen::Matrix3d M = a.R.transpose() * b.R;
-  const Eigen::Vector3d axis(M(2, 1) - M(1, 2), M(0, 2) - M(2, 0), M(1, 0) - M(0, 1));
-  const double turn = pm::atan2(0.5 * axis.norm(), 0.5 * (M.trace() - 1.0));
-  if (rung > active_ && (jump > FidelityPolicy::kMaxJump || turn > FidelityPolicy::kMaxTurn)) {
-    FidelityPolicy::refuse(policyState_);
-    return false;
-  }
-  // The force laws' states (contact planes, transient slips, brakes, held
-  // inputs) are per wheel in both models.
-  const vehicle::VehicleForces::State forces = forces_->state();
-  activate(rung);
-  forces_->setState(forces);
-  integ::Message msg;
-  if (integrator_->restart(from.t, q, v, msg) != integ::EvalStatus::Ok)
-    throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
-                             " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
-  ++policyState_.switches;
-  policyState_.maxJump = std::max(policyState_.maxJump, jump);
-  policyState_.maxTurn = std::max(policyState_.maxTurn, turn);
-  switchJump_ = std::max(switchJump_, jump);
-  return true;
-}
-
-double Simulation::takeSwitchJump() {
-  const double j = switchJump_;
-  switchJump_ = 0;
-  return j;
-}
-
-void Simulation::chooseRung() {
-  const ChassisState c = chassisState();
-  const FidelityPolicy::Decision d =
-      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, c.yawRate, forces_->wheels(), spec().tick);
-  if (d == FidelityPolicy::Decision::Full) switchRung(0);
-  if (d == FidelityPolicy::Decision::Planar) switchRung(1);
-}
-
-integ::Counters Simulation::counters() const {
-  integ::Counters c;
-  for (const Rung& r : rungs_) c += r.integrator->counters();
-  return c;
-}
-
-integ::Timers Simulation::timers() const {
-  integ::Timers t;
-  for (const Rung& r : rungs_) t += r.integrator->timers();
-  return t;
-}
 
 Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
@@ -468,143 +246,6 @@ vehicle::EquilibriumReport Simulation::prepare() {
       throw std::runtime_error("diverged while settling at t = " + std::to_string(time()) + " s: " + r.message.c_str());
   }
   return eq;
-}
-
-DrivelineSpeeds Simulation::drivelineSpeeds(const integ::Vec& v, double vx) const {
-  DrivelineSpeeds s;
-  s.vx = vx;
-  s.engine = v(vehicle().layout.engineV);
-  int n = 0;
-  for (int w = 0; w < 4; ++w)
-    if (vehicle().wheel(w).driven) {
-      s.output += vehicle().layout.wheels[w].spinSign * v(vehicle().layout.wheels[w].spinV);
-      ++n;
-    }
-  s.output /= std::max(1, n);
-  return s;
-}
-
-void Simulation::applyPowertrain(DriverInput in, double vx, double h) {
-  const vehicle::PowertrainSpec& p = *vehicle().spec.powertrain;
-  const DrivelineSpeeds s = drivelineSpeeds(integrator_->current().v, vx);
-  if (speed_ && speed_->active(time())) {
-    // The speed hold works the pedals: its torque per driven wheel as a
-    // share of what the engine gives in this gear now, or as a brake.
-    const double T = speed_->torque(vx, h, time());
-    const double ratio = std::abs(p.gearbox.overall(transmission_->state().gear));
-    int driven = 0;
-    double brakes = 0;
-    for (int w = 0; w < 4; ++w) {
-      driven += vehicle().wheel(w).driven ? 1 : 0;
-      brakes += vehicle().wheel(w).brakeTorque;
-    }
-    const double available = vehicle::fullLoadTorque(p.engine, s.engine) * ratio / std::max(1, driven);
-    in.throttle = T > 0 ? (available > 0 ? std::min(1.0, T / available) : 1.0) : 0.0;
-    in.brake = T < 0 && brakes > 0 ? std::min(1.0, -T * driven / brakes) : in.brake;
-  } else if (speed_) {
-    speed_->torque(vx, h, time());  // keeps its phase (its integral starts afresh when it takes over)
-  }
-  forces_->setDriveline(transmission_->update(in, s, h));
-  for (int w = 0; w < 4; ++w) {
-    const vehicle::WheelSpec& ws = vehicle().wheel(w);
-    forces_->setDriveTorque(w, 0.0);
-    const double handbrake = w >= 2 ? in.handbrake * p.handbrakeTorque : 0.0;
-    forces_->setBrakeCapacity(w, std::max(in.brake * ws.brakeTorque, handbrake));
-  }
-}
-
-PowertrainChannels Simulation::powertrainChannels() const {
-  PowertrainChannels c;
-  if (!transmission_) return c;
-  // From the accepted state and the command held over its step (not the
-  // force law's latest evaluation, which a sample or a view may have made).
-  const vehicle::PowertrainSpec& p = *vehicle().spec.powertrain;
-  const vehicle::DrivelineState& d = forces_->driveline();
-  const DrivelineSpeeds s = drivelineSpeeds(integrator_->current().v, 0.0);
-  const double rpm = 60.0 / (2.0 * M_PI), slip = s.engine - d.command.ratio * s.output;
-  c.engineRpm = s.engine * rpm;
-  c.gear = transmission_->state().gear;
-  c.clutch = transmission_->state().engagement;
-  c.clutchSlipRpm = slip * rpm;
-  c.engineTorque = vehicle::engineTorque(p.engine, s.engine, d.command.throttle);
-  c.clutchTorque = d.command.ratio == 0.0
-                       ? 0.0
-                       : vehicle::clutchTorque(p.clutch, d.command.clutchCapacity, d.clutchDeflection, slip, 0.0);
-  c.throttle = d.command.throttle;
-  c.handbrake = input_.handbrake;
-  return c;
-}
-
-void Simulation::applyDrive(const DriverInput& in, double vx, double h) {
-  if (transmission_) return applyPowertrain(in, vx, h);
-  double pi = 0;
-  if (speed_) pi = speed_->torque(vx, h, time());
-  for (int w = 0; w < 4; ++w) {
-    const vehicle::WheelSpec& ws = vehicle().wheel(w);
-    const double drive = ws.driven ? in.throttle * vehicle().spec.maxDriveTorque + pi : 0.0;
-    forces_->setDriveTorque(w, drive);
-    forces_->setBrakeCapacity(w, in.brake * ws.brakeTorque);
-  }
-}
-
-Simulation::ChassisState Simulation::chassisState() const {
-  // From the coordinates directly (no kinematic pass): the free joint holds
-  // the chassis position and attitude, its velocity is in chassis axes.
-  const integ::SolutionPoint& p = integrator_->current();
-  if (vehicle().planar) {
-    // The planar joint: (x, y, yaw) and (forward, sideways, yaw rate) of the
-    // base; the centre of mass where it sits on the base at rest.
-    const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
-    const double* qb = p.q.data() + b.qIndex;
-    const double u = p.v(b.vIndex), r = p.v(b.vIndex + 2);
-    const Eigen::Vector3d c = vehicle().planar->comInBase;
-    const double cy = pm::cos(qb[2]), sy = pm::sin(qb[2]);
-    ChassisState s;
-    s.com = Eigen::Vector3d(qb[0] + cy * c.x() - sy * c.y(), qb[1] + sy * c.x() + cy * c.y(), c.z());
-    s.yaw = qb[2];
-    s.vx = u - r * c.y();
-    s.yawRate = r;
-    return s;
-  }
-  const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
-  const double* qc = p.q.data() + ch.qIndex;
-  const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).toRotationMatrix();
-  const Eigen::Vector3d vb = p.v.segment<3>(ch.vIndex), wb = p.v.segment<3>(ch.vIndex + 3);
-  ChassisState s;
-  s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
-  s.yaw = pm::atan2(R(1, 0), R(0, 0));
-  s.vx = (vb + wb.cross(ch.com)).x();
-  s.yawRate = wb.z();
-  return s;
-}
-
-void Simulation::steerToward(double command) {
-  const double t = time(), tick = spec().tick;
-  const double s = rack_.steerAt(t), r = rack_.rateAt(t);
-  rack_.segment = {false, t, s, r, steeringAcceleration(steeringLimits_, s, r, command, tick)};
-}
-
-void Simulation::beginTick(const std::optional<DriverInput>& input) {
-  scriptedDriver_ = !input;
-  if (input) {
-    input_.steer = std::clamp(input->steer, -1.0, 1.0);
-    input_.throttle = std::clamp(input->throttle, 0.0, 1.0);
-    input_.brake = std::clamp(input->brake, 0.0, 1.0);
-    input_.handbrake = std::clamp(input->handbrake, 0.0, 1.0);
-    input_.clutch = std::clamp(input->clutch, 0.0, 1.0);
-    input_.clutchPedal = input->clutchPedal;
-    input_.shift = input->shift > 0 ? 1 : input->shift < 0 ? -1 : 0;
-    steerToward(input_.steer);
-  } else if (follower_ && time() >= 0) {
-    const ChassisState s = chassisState();
-    input_.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, spec().tick);
-    steerToward(input_.steer);
-  } else if (spec().steering.asDriverCommand && time() >= 0) {
-    // Sampled in the middle of the tick, away from a square signal's edges.
-    input_.steer = std::clamp(steering_->at(time() + 0.5 * spec().tick).value, -1.0, 1.0);
-    steerToward(input_.steer);
-  }
-  if (policy_) chooseRung();
 }
 
 integ::StepReport Simulation::step() {

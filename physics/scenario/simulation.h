@@ -93,7 +93,7 @@ struct RunState {
   int rung = 0;                        // the model driving: 0 = world.vehicle, 1 = world.planar
   FidelityPolicy::State fidelity;      // `auto`'s
   TransmissionState transmission;      // a powertrain's gear, shift and clutch
-  bool operator==(const RunState& o) const;
+  bool operator==(const RunState&) const = default;
 };
 
 // The rack target as a signal: steer s(t) in [-1, 1] -> rack travel.

@@ -1,0 +1,125 @@
+// The fidelity ladder inside a Simulation: each rung's force laws, DAE and
+// integrator, the switch between rungs (the state mapped, the chassis's
+// jump checked) and `auto`'s choice at a tick.
+#include "scenario/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "integrator/bdf.h"
+#include "integrator/explicit.h"
+#include "multibody/kinematics.h"
+#include "vehicle/rung_mapping.h"
+#include "portable_math.h"
+
+namespace bdfcar::scenario {
+
+Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
+  Rung r;
+  r.vehicle = &veh;
+  vehicle::TerrainContactOptions contact;
+  contact.raysPerWheel = spec().raysPerWheel;
+  r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
+  r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
+  r.dae->addForceProvider(r.forces.get());
+  // A wheel's spin column of the Jacobian is dominated by its tyre's slip
+  // stiffness, which collapses when the tyre saturates (a rough road flips
+  // a tyre between the regimes from one step to the next): the integrator
+  // refreshes these columns alone when Newton stalls.
+  std::vector<int> spins;
+  for (const vehicle::WheelLayout& w : veh.layout.wheels) spins.push_back(w.spinV);
+  r.dae->setFastColumns(std::move(spins));
+  // Every driver of a vehicle model is the rack's: the rack itself and, in a
+  // derived model, the rack travel of each steered corner's table.
+  for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
+  r.integrator = makeIntegrator(*r.dae);
+  r.scratch = mb::makeData(veh.model);
+  return r;
+}
+
+std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(mb::MultibodyDae& dae) const {
+  const IntegratorSpec& is = spec().integrator;
+  if (is.method == IntegratorMethod::Bdf) return std::make_unique<integ::BdfIntegrator>(dae, is.bdf);
+  integ::ExplicitOptions o = is.explicitMethod;
+  o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
+  return std::make_unique<integ::ExplicitIntegrator>(dae, o);
+}
+
+void Simulation::activate(int rung) {
+  active_ = rung;
+  forces_ = rungs_[rung].forces.get();
+  dae_ = rungs_[rung].dae.get();
+  integrator_ = rungs_[rung].integrator.get();
+}
+
+Simulation::ChassisPose Simulation::chassisPose(int rung, const integ::Vec& q) {
+  Rung& r = rungs_[rung];
+  mb::updatePositions(r.vehicle->model, q, r.scratch);
+  const int ch = r.vehicle->layout.chassis;  // the sprung body of the planar model
+  return {r.scratch.p[ch], r.scratch.R[ch]};
+}
+
+bool Simulation::switchRung(int rung) {
+  if (rung == active_) return true;
+  if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
+  const integ::SolutionPoint from = integrator_->current();
+  Eigen::VectorXd q, v;
+  if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, from.q, from.v, q, v);
+  else vehicle::planarToKinematic(*world_->planar, world_->vehicle, from.q, from.v, q, v);
+  // A switch never moves the chassis: what the mapping drops (heave, the
+  // travels) must be what the lower rung would have anyway. Up, the mapping
+  // copies the sprung body's pose (a jump there would be a bug, and staying
+  // on a rung outside its validity is no option: it is measured, not refused).
+  const ChassisPose a = chassisPose(active_, from.q), b = chassisPose(rung, q);
+  const double jump = (b.p - a.p).norm();
+  const Eigen::Matrix3d M = a.R.transpose() * b.R;
+  const Eigen::Vector3d axis(M(2, 1) - M(1, 2), M(0, 2) - M(2, 0), M(1, 0) - M(0, 1));
+  const double turn = pm::atan2(0.5 * axis.norm(), 0.5 * (M.trace() - 1.0));
+  if (rung > active_ && (jump > FidelityPolicy::kMaxJump || turn > FidelityPolicy::kMaxTurn)) {
+    FidelityPolicy::refuse(policyState_);
+    return false;
+  }
+  // The force laws' states (contact planes, transient slips, brakes, held
+  // inputs) are per wheel in both models.
+  const vehicle::VehicleForces::State forces = forces_->state();
+  activate(rung);
+  forces_->setState(forces);
+  integ::Message msg;
+  if (integrator_->restart(from.t, q, v, msg) != integ::EvalStatus::Ok)
+    throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
+                             " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
+  ++policyState_.switches;
+  policyState_.maxJump = std::max(policyState_.maxJump, jump);
+  policyState_.maxTurn = std::max(policyState_.maxTurn, turn);
+  switchJump_ = std::max(switchJump_, jump);
+  return true;
+}
+
+double Simulation::takeSwitchJump() {
+  const double j = switchJump_;
+  switchJump_ = 0;
+  return j;
+}
+
+void Simulation::chooseRung() {
+  const ChassisState c = chassisState();
+  const FidelityPolicy::Decision d =
+      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, c.yawRate, forces_->wheels(), spec().tick);
+  if (d == FidelityPolicy::Decision::Full) switchRung(0);
+  if (d == FidelityPolicy::Decision::Planar) switchRung(1);
+}
+
+integ::Counters Simulation::counters() const {
+  integ::Counters c;
+  for (const Rung& r : rungs_) c += r.integrator->counters();
+  return c;
+}
+
+integ::Timers Simulation::timers() const {
+  integ::Timers t;
+  for (const Rung& r : rungs_) t += r.integrator->timers();
+  return t;
+}
+
+}  // namespace bdfcar::scenario
