@@ -38,6 +38,9 @@ struct DriveArgs {
 int runDrive(const DriveArgs& a) {
   std::unique_ptr<Recording> replay;
   if (!a.replay.empty()) replay = std::make_unique<Recording>(readRecording(a.replay));
+  if (replay && replay->droppedLine)
+    std::fprintf(stderr, "%s:%d: the last line is cut off (no newline: the recording was stopped mid-line); "
+                 "replaying the %ld whole ticks before it\n", a.replay.c_str(), replay->droppedLine, replay->inputCount());
   // A replay without a scenario on the command line replays against the one it names.
   std::string scenarioFile = a.scenario;
   if (replay && !a.scenarioGiven && !replay->scenarioFile.empty() && std::filesystem::is_regular_file(replay->scenarioFile))

@@ -15,6 +15,8 @@ struct Command {
 using CommandList = std::vector<Command>;
 
 void addVersionCommand(CLI::App& app, CommandList& commands);
+// What `bdfcar version` and `bdfcar --version` print; returns 0.
+int printVersion();
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
 void addSweepCommand(CLI::App& app, CommandList& commands);

@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   addRenderDelegateCommand(app, commands);
   addInputCommand(app, commands);
 #endif
+  bool version = false;
+  app.add_flag("-V,--version", version, "Print the version (as `bdfcar version`) and exit");
   requireFiniteNumbers(app);
   try {
     app.parse(argc, argv);
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
   }
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();
+  if (version) return printVersion();
   std::fprintf(stderr, "%s\nerror: name a command (see above)\n", app.help().c_str());
   return kExitUsage;
 }

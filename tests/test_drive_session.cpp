@@ -4,6 +4,10 @@
 // recording refuses to replay against other data.
 #include <gtest/gtest.h>
 
+#include <cctype>
+
+#include <iterator>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -132,6 +136,67 @@ TEST(DriveSession, ARecordingRefusesToReplayAgainstAnotherVehicleOrTick) {
   other = spec;
   other.integrator.step = 0.005;  // another step replays the same drive
   EXPECT_TRUE(app::replayMismatch(r, other).empty());
+}
+
+// The recording's header is what makes the check: a recording without its
+// content hashes (an old one, or one whose header was deleted) is refused
+// (--replay-anyway replays it all the same); one with no whole tick is
+// refused when read; a last line cut off (a kill, a full disk) is dropped
+// and the whole lines before it replay.
+TEST(DriveSession, ARecordingWithoutItsHeaderOrTicksIsRefusedAndACutLineDropped) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  const std::string rec = temp("header.rec");
+  {
+    app::SessionOptions o;
+    o.recordPath = rec;
+    app::DriveSession d(spec, o);
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+    d.closeOutputs();
+  }
+  std::string text;
+  {
+    std::ifstream in(rec);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  auto write = [](const std::string& path, const std::string& content) { std::ofstream(path, std::ios::binary) << content; };
+  // The header lines removed: the ticks alone.
+  std::string ticksOnly;
+  {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && (std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '#')) ticksOnly += line + "\n";
+  }
+  const std::string headerless = temp("headerless.rec");
+  write(headerless, ticksOnly);
+  const app::Recording h = app::readRecording(headerless);
+  EXPECT_EQ(h.inputCount(), 5);
+  EXPECT_NE(app::replayMismatch(h, spec).find("does not name the content"), std::string::npos);
+
+  // Header only, and empty: no tick to replay.
+  auto refused = [&](const std::string& content, const std::string& expected) {
+    const std::string path = temp("refused.rec");
+    write(path, content);
+    try {
+      app::readRecording(path);
+      ADD_FAILURE() << "accepted: " << expected;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("refused.rec:"), std::string::npos) << e.what();
+    }
+  };
+  refused(text.substr(0, text.find("\n0 ") + 1), "no recorded ticks");
+  refused("", "no recorded ticks");
+
+  // Cut inside the last tick: the four whole ticks replay, the cut one is dropped.
+  const std::string cut = temp("cut.rec");
+  write(cut, text.substr(0, text.size() - 7));
+  const app::Recording c = app::readRecording(cut);
+  EXPECT_EQ(c.inputCount(), 4);
+  EXPECT_GT(c.droppedLine, 0);
+  EXPECT_TRUE(app::replayMismatch(c, spec).empty());
+  // Cut inside the only tick.
+  const size_t firstTick = text.find("\n0 ") + 1;
+  refused(text.substr(0, firstTick + 5), "cut off");
 }
 
 // A drive in the car with a powertrain: gear requests, the handbrake and a

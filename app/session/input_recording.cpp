@@ -74,6 +74,13 @@ Recording readRecording(const std::string& path) {
   };
   while (std::getline(in, line)) {
     ++lineNo;
+    // A last line without its newline was cut off (the recorder writes
+    // whole lines: a kill or a full disk stopped it): dropped, even where
+    // it parses (a number cut short still reads as a number).
+    if (in.eof() && !line.empty()) {
+      r.droppedLine = lineNo;
+      break;
+    }
     if (line.empty() || line[0] == '#') continue;
     std::istringstream s(line);
     std::string word;
@@ -134,14 +141,22 @@ Recording readRecording(const std::string& path) {
     r.entries.push_back({RecordedTick::Kind::Input, d});
     ++inputs;
   }
+  if (inputs == 0) {
+    lineNo = r.droppedLine ? r.droppedLine : lineNo;
+    fail(r.droppedLine ? "no whole recorded tick (the only one is cut off)" : "no recorded ticks (an empty recording)");
+  }
   return r;
 }
 
 std::string replayMismatch(const Recording& rec, const scenario::ScenarioSpec& spec) {
-  if (!rec.scenarioHash.empty() && rec.scenarioHash != fileContentHash(spec.sourceFile))
+  if (rec.scenarioHash.empty() || rec.vehicleHash.empty())
+    return "it does not name the content of the scenario and vehicle it was recorded with (scenario_hash and "
+           "vehicle_hash: a recording made before bdfcar wrote them, or one whose header was removed), so nothing "
+           "says it replays the same drive";
+  if (rec.scenarioHash != fileContentHash(spec.sourceFile))
     return "it was recorded with the scenario " + rec.scenarioFile + " (content " + rec.scenarioHash +
            "), this run's scenario " + spec.sourceFile + " differs";
-  if (!rec.vehicleHash.empty() && rec.vehicleHash != fileContentHash(spec.vehicleFile))
+  if (rec.vehicleHash != fileContentHash(spec.vehicleFile))
     return "it was recorded with the vehicle " + rec.vehicleFile + " (content " + rec.vehicleHash +
            "), this run's vehicle " + spec.vehicleFile + " differs";
   if (rec.tick > 0 && std::abs(rec.tick - spec.tick) > 1e-12)

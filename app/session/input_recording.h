@@ -46,14 +46,19 @@ struct Recording {
   std::string scenarioFile, scenarioHash, vehicleFile, vehicleHash;  // empty in old recordings
   double tick = 0;                     // 0 in old recordings (10 ms)
   std::vector<RecordedTick> entries;   // in order: inputs numbered from 0, events between them
+  int droppedLine = 0;                 // a last line cut off (no newline), not replayed; 0: none
   long inputCount() const;
 };
 
-// Reads a recording; throws std::runtime_error with file:line on a bad line.
+// Reads a recording; throws std::runtime_error with file:line on a bad line
+// or when no whole tick is recorded. A last line without its newline (the
+// recording was cut off) is dropped: droppedLine says which.
 Recording readRecording(const std::string& path);
 
 // Why `rec` would not replay the drive it recorded with `spec` ("" when it
-// would): another scenario or vehicle file content, or another tick.
+// would): another scenario or vehicle file content, or another tick, or a
+// recording that names no content to check (made before the hashes, or its
+// header removed).
 std::string replayMismatch(const Recording& rec, const scenario::ScenarioSpec& spec);
 
 }  // namespace bdfcar::app

@@ -1,4 +1,5 @@
 #include "sweep/sweep_spec.h"
+#include "config/file_kind.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -75,8 +76,7 @@ SweepSpec loadSweepFile(const std::string& path) {
     const std::filesystem::path p = std::filesystem::path(test).is_absolute()
                                         ? std::filesystem::path(test)
                                         : std::filesystem::path(sw.folderOf("tests")) / test;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec)) sw.fail("the scenario '" + p.string() + "' does not exist", "tests");
+    if (const auto why = config::notARegularFile(p)) sw.fail("the scenario '" + p.string() + "' " + *why, "tests");
     s.tests.push_back(p.lexically_normal().string());
   }
   sw.require(!s.tests.empty(), "tests", "at least one scenario file");

@@ -1,4 +1,5 @@
 #include "config/toml_reader.h"
+#include "config/file_kind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -659,9 +660,8 @@ toml::value loadWithIncludes(const std::string& path, std::vector<std::string>& 
     if (n->empty()) failAtValue(include, "key 'include': expected a file name, got \"\"");
     const std::filesystem::path p = std::filesystem::path(*n).is_absolute() ? std::filesystem::path(*n)
                                                                            : (folder / *n).lexically_normal();
+    if (const auto why = notARegularFile(p)) failAtValue(include, "key 'include': the file '" + p.string() + "' " + *why);
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec))
-      failAtValue(include, "key 'include': the file '" + p.string() + "' does not exist or is not a regular file");
     const std::string canonical = std::filesystem::weakly_canonical(p, ec).string();
     if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
       failAtValue(include, "key 'include': '" + p.string() + "' includes itself (through " +

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "config/toml_reader.h"
+#include "config/file_kind.h"
 #include "scenario/scenario_spec.h"
 #include "terrain/terrain_file.h"
 #include "vehicle/ladder.h"
@@ -43,10 +44,7 @@ std::string resolveAsset(Table& t, const std::string& key) {
   const std::filesystem::path rel = t.string(key);
   if (rel.empty()) t.fail("expected a file name, got \"\"", key);
   const std::filesystem::path p = rel.is_absolute() ? rel : (std::filesystem::path(t.folderOf(key)) / rel).lexically_normal();
-  std::error_code ec;  // no exceptions: a name too long or unreadable is "does not exist"
-  const auto status = std::filesystem::status(p, ec);
-  if (ec || !std::filesystem::exists(status)) t.fail("the file '" + p.string() + "' does not exist", key);
-  if (!std::filesystem::is_regular_file(status)) t.fail("'" + p.string() + "' is not a regular file", key);
+  if (const auto why = config::notARegularFile(p)) t.fail("the file '" + p.string() + "' " + *why, key);
   return p.string();
 }
 

@@ -1,5 +1,6 @@
 // The terrain loader: one TOML file in, checked TerrainData out.
 #include "terrain/terrain_file.h"
+#include "config/file_kind.h"
 
 #include <filesystem>
 #include <numbers>
@@ -35,10 +36,9 @@ void readPlane(Table t, TerrainData& data) {
 // Triangles of the OBJ file named relative to the file naming it, moved by `offset`.
 void readMesh(Table t, TerrainData& data) {
   t.rejectUnknownKeys({"obj", "offset"});
+  if (t.string("obj").empty()) t.fail("expected a file name, got \"\"", "obj");
   const std::filesystem::path objPath = std::filesystem::path(t.folderOf("obj")) / t.string("obj");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(objPath, ec))
-    t.fail("names OBJ file '" + objPath.string() + "', which does not exist", "obj");
+  if (const auto why = config::notARegularFile(objPath)) t.fail("names OBJ file '" + objPath.string() + "', which " + *why, "obj");
   ObjMesh obj;
   try {
     obj = readObj(objPath.string());
@@ -124,8 +124,7 @@ GroundPiece readPiece(Table& t) {
   GroundPiece p;
   const std::filesystem::path rel = t.string("terrain");
   const std::filesystem::path file = rel.is_absolute() ? rel : (std::filesystem::path(t.folderOf("terrain")) / rel).lexically_normal();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) t.fail("names terrain file '" + file.string() + "', which does not exist", "terrain");
+  if (const auto why = config::notARegularFile(file)) t.fail("names terrain file '" + file.string() + "', which " + *why, "terrain");
   p.terrain = readTerrain(file.string(), true);
   p.name = t.string("name", p.terrain.name);
   const std::vector<double> at = t.numbers("at", Dimension::Length, kCoordinate);

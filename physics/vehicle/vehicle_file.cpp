@@ -1,4 +1,5 @@
 #include "vehicle/vehicle_file.h"
+#include "config/file_kind.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -503,9 +504,7 @@ void Loader::readAppearance() {
       const std::filesystem::path mesh = a->string("body_mesh");
       g.bodyMesh = mesh.is_absolute() ? mesh.string()
                                       : (std::filesystem::path(a->folderOf("body_mesh")) / mesh).lexically_normal().string();
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(g.bodyMesh, ec))
-        a->fail("the file '" + g.bodyMesh + "' does not exist or is not a regular file", "body_mesh");
+      if (const auto why = config::notARegularFile(g.bodyMesh)) a->fail("the file '" + g.bodyMesh + "' " + *why, "body_mesh");
     }
     if (a->has("colour")) g.bodyColour = a->vector3("colour", Dimension::None, kColour);
     g.length = a->number("length", Dimension::Length, kPositiveLength, g.length);
