@@ -36,6 +36,15 @@ scenario::DriverInput personAt(int i) {
   return {0.3 * std::sin(2.0 * t), t < 1.0 ? 0.5 : 0.0, 0.0};
 }
 
+// A drive of `ticks` of a person's inputs, recorded to `path`.
+void recordTicks(const scenario::ScenarioSpec& spec, const std::string& path, int ticks) {
+  app::SessionOptions o;
+  o.recordPath = path;
+  app::DriveSession d(spec, o);
+  for (int i = 0; i < ticks; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  d.closeOutputs();
+}
+
 // 100 ticks, reset, 60 ticks, rewind, 40 ticks.
 void driveWithResetAndRewind(app::DriveSession& d) {
   for (int i = 0; i < 100; ++i) ASSERT_TRUE(d.tick(personAt(i)));
@@ -119,13 +128,7 @@ TEST(DriveSession, StartingAndStoppingARecordingKeepsTheFormerOne) {
 TEST(DriveSession, ARecordingRefusesToReplayAgainstAnotherVehicleOrTick) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
   const std::string rec = temp("mismatch.rec");
-  {
-    app::SessionOptions o;
-    o.recordPath = rec;
-    app::DriveSession d(spec, o);
-    for (int i = 0; i < 5; ++i) ASSERT_TRUE(d.tick(personAt(i)));
-    d.closeOutputs();
-  }
+  recordTicks(spec, rec, 5);
   const app::Recording r = app::readRecording(rec);
   scenario::ScenarioSpec other = spec;
   other.vehicleFile = asset("vehicles/paper.toml");
@@ -146,13 +149,7 @@ TEST(DriveSession, ARecordingRefusesToReplayAgainstAnotherVehicleOrTick) {
 TEST(DriveSession, ARecordingWithoutItsHeaderOrTicksIsRefusedAndACutLineDropped) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
   const std::string rec = temp("header.rec");
-  {
-    app::SessionOptions o;
-    o.recordPath = rec;
-    app::DriveSession d(spec, o);
-    for (int i = 0; i < 5; ++i) ASSERT_TRUE(d.tick(personAt(i)));
-    d.closeOutputs();
-  }
+  recordTicks(spec, rec, 5);
   std::string text;
   {
     std::ifstream in(rec);
