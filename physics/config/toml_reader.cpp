@@ -283,10 +283,29 @@ double Table::number(const std::string& key, Dimension d, double fallback) {
   return has(key) ? number(key, d) : fallback;
 }
 
+// A string from a data file is printed (names in summaries, messages, the
+// HUD) and used in file names: a control character (TOML lets one in as an
+// escape such as \u001b) would reach the terminal as a command. Refused:
+// C0 controls but tab, DEL, and the C1 controls (U+0080-U+009F, which some
+// terminals obey too).
 std::string Table::string(const std::string& key) {
   const void* v = get(key, "a string");
   if (!V(v).is_string()) failValue(v, key, "a string");
-  return V(v).as_string().str;
+  const std::string& text = V(v).as_string().str;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    unsigned code = c;
+    if (c == 0xC2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+        static_cast<unsigned char>(text[i + 1]) <= 0x9F)
+      code = static_cast<unsigned char>(text[i + 1]);
+    else if (!((c < 0x20 && c != '\t') || c == 0x7F))
+      continue;
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "U+%04X", code);
+    failAt(v, "key '" + dotted(key) + "': expected text without control characters, got " + hex + " at byte " +
+                  std::to_string(i + 1));
+  }
+  return text;
 }
 
 std::string Table::string(const std::string& key, const std::string& fallback) {
