@@ -53,6 +53,11 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   // the printed time per step is then the step alone.
   opt.sample = !out.empty() || sim.course().has_value() || opt.keepSamples;
   const scenario::RunResult r = scenario::runScenario(sim, opt);
+  if (!r.interruptedWhileSettling.empty()) {
+    std::fprintf(stderr, "%s: stopped by %s before the run began (%s)%s\n", spec.name.c_str(), interruptSignalName(),
+                 r.interruptedWhileSettling.c_str(), out.empty() ? "" : ": no telemetry written");
+    return interruptExitStatus();
+  }
   if (!r.ok) {
     std::fprintf(stderr, "error: %s: the run failed at t = %.3f s: %s\n", path.c_str(), r.failureTime, r.failure.c_str());
     // A sweep's summary keeps the failed case (ok = 0) with what it reached.

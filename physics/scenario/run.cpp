@@ -9,9 +9,12 @@ namespace bdfcar::scenario {
 
 Run::Run(Simulation& sim, const RunOptions& config) : sim_(sim), config_(config) {
   try {
-    equilibrium_ = sim_.prepare();
+    equilibrium_ = sim_.prepare(config_.stopRequested);
   } catch (const PrepareError&) {
     throw;  // bad vehicle data: the caller's error, not a failed run
+  } catch (const PrepareInterrupted& e) {
+    interruptedWhileSettling_ = e.what();  // a stop, not a failure: no step was run, nothing recorded
+    return;
   } catch (const std::exception& e) {  // diverged while settling or starting: the run failed before it began
     failure_ = e.what();
     failureTime_ = sim_.time();
@@ -185,6 +188,8 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   std::optional<Run> run;
   run.emplace(sim, options);
   r.equilibrium = run->equilibrium();
+  r.interruptedWhileSettling = run->interruptedWhileSettling();
+  r.interrupted = !r.interruptedWhileSettling.empty();
   const auto wall0 = std::chrono::steady_clock::now();
   while (!run->finished() && run->tick(std::nullopt)) {
     if (options.stopRequested && options.stopRequested->load()) {

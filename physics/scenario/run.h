@@ -56,6 +56,7 @@ struct RunResult {
   std::vector<double> steerInputs;  // steering input per sample
   std::optional<CourseResult> course;  // when the scenario has a course
   bool interrupted = false;         // ended early on options.stopRequested
+  std::string interruptedWhileSettling;  // not empty: stopped before the run began (what prepare said)
   std::vector<float> stepSeconds;   // wall time of each manoeuvre step (per-step cost)
   long fidelitySwitches = 0;        // model switches under `[fidelity] suspension = "auto"`
   FidelityPolicy::State fidelity;   // `auto`'s at the end: switches refused, largest jumps
@@ -92,6 +93,8 @@ class Run {
   int segment() const { return segment_; }
 
   bool failed() const { return !failure_.empty(); }
+  // Not empty: the stop flag was set while the car settled (Simulation::prepare).
+  const std::string& interruptedWhileSettling() const { return interruptedWhileSettling_; }
   const std::string& failure() const { return failure_; }    // "diverged: Newton ..." 
   double failureTime() const { return failureTime_; }
   // The one wording of a failure for every command.
@@ -146,6 +149,7 @@ class Run {
   std::vector<double> steerInputs_;
   std::vector<float> stepSeconds_;
   long steps_ = 0, ticks_ = 0, totalSteps_ = 0, outputEvery_ = 1;
+  std::string interruptedWhileSettling_;
   std::array<long, 3> modelSteps_{};
   int lastIterations_ = 0;
   double lastCorrection_ = 0;

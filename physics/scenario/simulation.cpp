@@ -163,7 +163,7 @@ Simulation::StartPose Simulation::startPose() const {
   return pose;
 }
 
-vehicle::EquilibriumReport Simulation::prepare() {
+vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   // Settling on the full model; `auto` chooses from the first tick on.
   activate(0);
   policyState_ = {};
@@ -241,6 +241,11 @@ vehicle::EquilibriumReport Simulation::prepare() {
   const double h = spec().integrator.step;
   const long settleSteps = std::lround(spec().settleTime / h);
   for (long i = 0; i < settleSteps; ++i) {
+    if (stop && stop->load()) {
+      prepared_ = false;
+      throw PrepareInterrupted("stopped while settling, at t = " + std::to_string(time()) + " s of " +
+                               std::to_string(t0) + " s to 0");
+    }
     const integ::StepReport r = step();
     if (!r.ok())
       throw std::runtime_error("diverged while settling at t = " + std::to_string(time()) + " s: " + r.message.c_str());

@@ -13,6 +13,7 @@
 // The run driver (scenario/run.h) does exactly this for every command.
 #pragma once
 
+#include <atomic>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -47,6 +48,13 @@ namespace bdfcar::scenario {
 // The vehicle's data cannot be assembled or brought to static equilibrium at
 // the start: bad input (the vehicle file), not a failed simulation.
 class PrepareError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The stop flag given to prepare() was set while the car settled (a signal:
+// app/interrupt.h): nothing was run yet.
+class PrepareInterrupted : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -120,7 +128,9 @@ class Simulation {
   // settling phase (tau = 0 at its end). Returns the static equilibrium.
   // Throws PrepareError when the vehicle cannot be assembled or settled
   // statically, std::runtime_error when the run diverges while settling.
-  vehicle::EquilibriumReport prepare();
+  // stop: looked at after every settling step; set, prepare throws
+  // PrepareInterrupted (a settling of 1e4 s or a step of 1 us takes hours).
+  vehicle::EquilibriumReport prepare(const std::atomic<bool>* stop = nullptr);
 
   // Starts a driver tick: nullopt = the scenario's own driver (scripted
   // signals, evaluated at every step; the path follower decides now), or a
