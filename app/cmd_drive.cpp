@@ -51,6 +51,7 @@ int runDrive(const DriveArgs& a) {
     if (!why.empty())
       throw std::runtime_error(a.replay + ": " + why + ": the replay would not reproduce the drive (--replay-anyway replays it all the same)");
   }
+  scenario::refuseSameOutputs({{"--telemetry", a.telemetry}, {"--record", a.record}});
   for (const std::string& out : {a.telemetry, a.record})
     scenario::refuseOverwritingInputs(out, {scenarioFile, spec.vehicleFile, spec.terrainFile, a.replay});
   InterruptGuard interrupts;

@@ -40,9 +40,14 @@ void reportMetrics(const scenario::ScenarioSpec& spec, const scenario::Simulatio
 
 int runRun(const std::string& path, const std::string& out, const std::string& metrics, const ScenarioOverrides& ov) {
   scenario::ScenarioSpec spec = loadScenario(path, ov);
-  scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
-  scenario::refuseOverwritingInputs(metrics, {path, spec.vehicleFile, spec.terrainFile, out});
+  auto refuseDestroyingOutputs = [&] {
+    scenario::refuseSameOutputs({{"--out", out}, {"--metrics", metrics}});
+    scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
+    scenario::refuseOverwritingInputs(metrics, {path, spec.vehicleFile, spec.terrainFile});
+  };
+  refuseDestroyingOutputs();  // before the vehicle and terrain are read (an output over them)
   scenario::Simulation sim(spec);
+  refuseDestroyingOutputs();  // and with every file the world read (includes, meshes); no output is open yet
   InterruptGuard interrupts;
   scenario::RunOptions opt;
   opt.telemetryPath = out;

@@ -84,6 +84,9 @@ double residentMegabytes() {
 int runSoak(const SoakArgs& a) {
   scenario::ScenarioSpec spec = loadScenario(a.scenario, a.overrides);
   spec.duration = a.seconds + 1.0;
+  scenario::refuseSameOutputs({{"--record", a.recording}, {"--telemetry", a.telemetry}});
+  for (const std::string& out : {a.recording, a.telemetry})
+    scenario::refuseOverwritingInputs(out, {a.scenario, spec.vehicleFile, spec.terrainFile});
   InterruptGuard interrupts;
   SessionOptions so;
   so.recordPath = a.recording;

@@ -1,4 +1,5 @@
 #include "session/input_recording.h"
+#include "config/input_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,6 +65,7 @@ long Recording::inputCount() const {
 Recording readRecording(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ":0: cannot open the input recording");
+  config::noteInputFile(path);
   Recording r;
   r.path = path;
   std::string line;

@@ -1,4 +1,5 @@
 #include "config/toml_reader.h"
+#include "config/input_files.h"
 #include "config/file_kind.h"
 
 #include <algorithm>
@@ -521,6 +522,7 @@ std::string readWholeFile(const std::string& path) {
   if (std::filesystem::is_directory(status)) throw ConfigError(path + ":0: is a directory, expected a TOML file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ConfigError(path + ":0: cannot open the file");
+  noteInputFile(path);
   std::string text;
   char buffer[65536];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {

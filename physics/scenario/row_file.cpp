@@ -1,4 +1,5 @@
 #include "scenario/row_file.h"
+#include "config/input_files.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -74,16 +75,38 @@ void RowFile::close() {
   if (::close(fd) != 0) throw OutputError(path_ + ": cannot write: " + std::strerror(errno));
 }
 
-void refuseOverwritingInputs(const std::string& output, const std::vector<std::string>& inputs) {
+namespace {
+// The same file: one inode where both exist (links, ../ detours), else the
+// same normalised absolute path (an output not written yet).
+bool sameFile(const std::string& a, const std::string& b) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (output.empty() || !fs::exists(output, ec)) return;
-  for (const std::string& in : inputs) {
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+  const fs::path ca = fs::weakly_canonical(a, ec);
+  if (ec) return false;
+  const fs::path cb = fs::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+}  // namespace
+
+void refuseOverwritingInputs(const std::string& output, const std::vector<std::string>& inputs) {
+  if (output.empty()) return;
+  std::vector<std::string> all = inputs;
+  for (const std::string& f : config::inputFilesRead()) all.push_back(f);
+  for (const std::string& in : all) {
     if (in.empty()) continue;
-    if (fs::equivalent(output, in, ec))
+    if (sameFile(output, in))
       throw OutputError(output + ": this is an input of the run (" + in +
                         "); choose another output file, the input would be overwritten");
   }
+}
+
+void refuseSameOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  for (size_t i = 0; i < outputs.size(); ++i)
+    for (size_t j = i + 1; j < outputs.size(); ++j)
+      if (!outputs[i].second.empty() && !outputs[j].second.empty() && sameFile(outputs[i].second, outputs[j].second))
+        throw OutputError(outputs[j].second + ": " + outputs[i].first + " and " + outputs[j].first +
+                          " name the same file; one would overwrite the other");
 }
 
 }  // namespace bdfcar::scenario

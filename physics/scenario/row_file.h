@@ -10,6 +10,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bdfcar::scenario {
@@ -47,9 +48,14 @@ class RowFile {
   long rows_ = 0;
 };
 
-// Refuses an output path that names one of the inputs (the scenario, the
-// vehicle, the terrain): writing telemetry over them would destroy them.
-// Throws OutputError naming both.
+// Refuses an output path that names one of the inputs given or any data
+// file the process has read (config/input_files.h: TOML files and their
+// includes, CSV inputs, meshes, recordings): writing over them would destroy
+// them. Compared by file where both exist, else by normalised path. Throws
+// OutputError naming both.
 void refuseOverwritingInputs(const std::string& output, const std::vector<std::string>& inputs);
+// Refuses two outputs that are one file ({option, path} pairs: "--out" and
+// "--metrics"): one would overwrite the other. Empty paths are skipped.
+void refuseSameOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 }  // namespace bdfcar::scenario

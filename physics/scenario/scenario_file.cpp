@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "config/toml_reader.h"
+#include "config/input_files.h"
 #include "config/file_kind.h"
 #include "scenario/scenario_spec.h"
 #include "terrain/terrain_file.h"
@@ -59,6 +60,7 @@ std::vector<std::vector<double>> readCsvColumns(Table& t, const std::string& fil
   path = p.string();
   std::ifstream in(p);
   if (!in) t.fail("cannot read the CSV file '" + path + "'", fileKey);
+  config::noteInputFile(path);
   std::string line;
   std::getline(in, line);
   std::vector<std::string> names;

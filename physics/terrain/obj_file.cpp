@@ -1,5 +1,6 @@
 // A minimal OBJ reader: the vertex and face statements a terrain needs.
 #include "terrain/obj_file.h"
+#include "config/input_files.h"
 
 #include <charconv>
 #include <cmath>
@@ -54,6 +55,7 @@ int parseCorner(const LineContext& at, const std::string& token, int vertexCount
 ObjMesh readObj(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw TerrainFileError(path + ": OBJ file not found or unreadable");
+  config::noteInputFile(path);
   ObjMesh mesh;
   std::string text;
   for (int lineNumber = 1; std::getline(in, text); ++lineNumber) {

@@ -1,4 +1,5 @@
 #include "vehicle/vehicle_file.h"
+#include "config/input_files.h"
 #include "config/file_kind.h"
 
 #include <Eigen/Eigenvalues>
@@ -505,6 +506,7 @@ void Loader::readAppearance() {
       g.bodyMesh = mesh.is_absolute() ? mesh.string()
                                       : (std::filesystem::path(a->folderOf("body_mesh")) / mesh).lexically_normal().string();
       if (const auto why = config::notARegularFile(g.bodyMesh)) a->fail("the file '" + g.bodyMesh + "' " + *why, "body_mesh");
+      config::noteInputFile(g.bodyMesh);  // read by the renderer: never an output
     }
     if (a->has("colour")) g.bodyColour = a->vector3("colour", Dimension::None, kColour);
     g.length = a->number("length", Dimension::Length, kPositiveLength, g.length);
