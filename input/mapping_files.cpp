@@ -3,17 +3,22 @@
 #include <fstream>
 #include <sstream>
 
+#include "config/file_kind.h"
+#include "config/input_files.h"
 #include "input/mapping.h"
 
 namespace bdfcar::input {
 
 // Reads and parses one mapping file.
 DeviceMapping loadMappingFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MappingError(path.string() + ":1: cannot open the mapping file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseMapping(text.str(), path.string());
+  std::string text;
+  try {
+    text = config::readDataFile(path.string(), "mapping file");
+  } catch (const std::runtime_error& e) {
+    throw MappingError(e.what());
+  }
+  config::noteInputFile(path.string());
+  return parseMapping(text, path.string());
 }
 
 // Every *.toml of a folder in file-name order.

@@ -493,6 +493,26 @@ TEST(InputMapping, SyntaxErrorsAndMissingTablesNameFileAndLine) {
   fs::remove_all(dir);
 }
 
+// A mapping file is read within the data-file cap and never from a device:
+// a 17 MiB file and /dev/zero are refused by name (the first was read whole,
+// the second would never end).
+TEST(InputMapping, OversizedFilesAndDevicesAreRefusedByName) {
+  const fs::path dir = freshDir("oversized");
+  const fs::path big = writeFile(dir, "big.toml", "# " + std::string(17u << 20, 'x') + "\n[device]\ntype = \"wheel\"\n");
+  auto refused = [](const fs::path& p, const std::string& expected) {
+    try {
+      loadMappingFile(p);
+      ADD_FAILURE() << p << " accepted";
+    } catch (const MappingError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(p.string() + ":0: ", 0), 0u) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  };
+  refused(big, "larger than 16 MiB");
+  refused("/dev/zero", "is a device, not a regular file");
+  fs::remove_all(dir);
+}
+
 TEST(InputMapping, ShippedFilesLoadOnePerDeviceKindWithTheStatedKeyboardRates) {
   const std::vector<DeviceMapping> shipped = loadMappingDir(BDFCAR_SHIPPED_INPUT_DIR);
   for (DeviceKind kind : {DeviceKind::Keyboard, DeviceKind::Wheel, DeviceKind::GameController, DeviceKind::Joystick})

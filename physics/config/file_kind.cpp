@@ -1,5 +1,8 @@
 #include "config/file_kind.h"
 
+#include <fstream>
+#include <stdexcept>
+
 namespace bdfcar::config {
 
 std::optional<std::string> notARegularFile(const std::filesystem::path& p) {
@@ -16,6 +19,25 @@ std::optional<std::string> notARegularFile(const std::filesystem::path& p) {
     case fs::file_type::socket: return std::string("is a socket, not a regular file");
     default: return std::string("is not a regular file");
   }
+}
+
+std::string readDataFile(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status s = fs::status(path, ec);
+  if (const auto why = notARegularFile(path); why && s.type() != fs::file_type::fifo)
+    throw std::runtime_error(path + ":0: the " + what + " " + *why);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ":0: cannot open the " + what);
+  std::string text;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxDataFileBytes)
+      throw std::runtime_error(path + ":0: the " + what + " is larger than " + std::to_string(kMaxDataFileBytes >> 20) +
+                               " MiB");
+  }
+  return text;
 }
 
 }  // namespace bdfcar::config

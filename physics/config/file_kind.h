@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -14,5 +15,14 @@ namespace bdfcar::config {
 // "is a folder, not a file", "is a device, not a regular file", "is a FIFO
 // (a named pipe), not a regular file" ...
 std::optional<std::string> notARegularFile(const std::filesystem::path& p);
+
+// What a data file (a CSV table, an input mapping) may be: a regular file,
+// or a FIFO or pipe (`cat table.csv | ... /dev/stdin`), read to at most
+// kMaxDataFileBytes. Never a folder, a device (/dev/zero would never end)
+// or a socket.
+constexpr std::size_t kMaxDataFileBytes = 16u << 20;
+// The whole text; throws std::runtime_error "PATH:0: <what> ..." naming the
+// rule broken (missing, a device, larger than the cap).
+std::string readDataFile(const std::string& path, const std::string& what);
 
 }  // namespace bdfcar::config

@@ -58,8 +58,12 @@ std::vector<std::vector<double>> readCsvColumns(Table& t, const std::string& fil
   const std::filesystem::path rel = t.string(fileKey);
   const std::filesystem::path p = rel.is_absolute() ? rel : std::filesystem::path(t.folderOf(fileKey)) / rel;
   path = p.string();
-  std::ifstream in(p);
-  if (!in) t.fail("cannot read the CSV file '" + path + "'", fileKey);
+  std::istringstream in;
+  try {
+    in.str(config::readDataFile(path, "CSV file"));
+  } catch (const std::runtime_error& e) {
+    t.fail(std::string("cannot read the CSV file: ") + e.what(), fileKey);
+  }
   config::noteInputFile(path);
   std::string line;
   std::getline(in, line);

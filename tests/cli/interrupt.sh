@@ -1,14 +1,24 @@
 #!/bin/sh
 # A run stopped by SIGINT or SIGTERM ends cleanly (its summary, exit 128 +
-# signal) and a run killed outright (SIGKILL) still leaves telemetry that
-# ends on a complete row: every row has the header's number of columns.
+# signal) with telemetry that ends on a complete row, every row with the
+# header's number of columns. A run killed outright (SIGKILL) leaves every
+# row but the last whole: Linux cuts a write() that spans pages at a page
+# boundary when a fatal signal arrives (generic_perform_write checks for one
+# before each page), so the rows the writer was flushing at that instant may
+# end mid-row, without a newline; the rows before them are whole. (Seen once
+# in ~20 CI runs, more often on a loaded machine.)
 # Usage: interrupt.sh BDFCAR SCENARIO
 bdfcar=$1; scenario=$2
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 complete_rows() {
-  f=$1
+  f=$1 killed=$2
   [ -s "$f" ] || { echo "check: $f is empty"; exit 1; }
-  [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "check: $f does not end on a newline"; exit 1; }
+  if [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" != '\n' ]; then
+    [ -n "$killed" ] || { echo "check: $f does not end on a newline"; exit 1; }
+    # Killed mid-flush: the whole rows are those before the last newline.
+    head -c "$(( $(wc -c < "$f") - $(tail -n 1 "$f" | wc -c) ))" "$f" > "$f.whole"
+    f=$f.whole
+  fi
   awk -F, 'NR == 1 { n = NF } NF != n { print "check: row " NR " has " NF " columns, the header " n; bad = 1 }
            END { if (NR < 50) { print "check: only " NR " rows"; bad = 1 } exit bad }' "$f" || exit 1
 }
@@ -26,6 +36,6 @@ for sig in INT TERM KILL; do
     TERM) [ "$status" -eq 143 ] || { echo "check: SIGTERM gave exit $status, expected 143"; exit 1; } ;;
     KILL) [ "$status" -eq 137 ] || { echo "check: SIGKILL gave exit $status"; exit 1; } ;;
   esac
-  complete_rows "$out"
+  complete_rows "$out" "$([ "$sig" = KILL ] && echo killed)"
   echo "$sig: exit $status, $(wc -l < "$out") complete rows"
 done
