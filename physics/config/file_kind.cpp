@@ -37,6 +37,7 @@ std::string readDataFile(const std::string& path, const std::string& what) {
       throw std::runtime_error(path + ":0: the " + what + " is larger than " + std::to_string(kMaxDataFileBytes >> 20) +
                                " MiB");
   }
+  if (in.bad()) throw std::runtime_error(path + ":0: cannot read the " + what);
   return text;
 }
 

@@ -16,7 +16,7 @@ namespace bdfcar::config {
 // (a named pipe), not a regular file" ...
 std::optional<std::string> notARegularFile(const std::filesystem::path& p);
 
-// What a data file (a CSV table, an input mapping) may be: a regular file,
+// What a data file (a TOML file, a CSV table, an input mapping) may be: a regular file,
 // or a FIFO or pipe (`cat table.csv | ... /dev/stdin`), read to at most
 // kMaxDataFileBytes. Never a folder, a device (/dev/zero would never end)
 // or a socket.

@@ -505,32 +505,22 @@ void Table::rejectUnknownKeys(const std::vector<std::string_view>& known) const 
 
 namespace {
 
-// Config files are small; anything larger is the wrong file.
-constexpr std::size_t kMaxFileBytes = 16u << 20;
 // Arrays and inline tables nested deeper than this are refused before toml11
 // sees them: its recursive descent parser would overflow the stack.
 constexpr int kMaxNesting = 64;
 
-// The whole content of `path`, read as a stream so that pipes (/dev/stdin,
-// <(...)) work too: seeking to the end to learn the size (what toml11 does)
-// fails on a pipe and, on a directory, asks for a 2^63-byte buffer.
+// The whole content of `path` within the data-file cap (config/file_kind.h),
+// read as a stream so that pipes (/dev/stdin, <(...)) work too: seeking to
+// the end to learn the size (what toml11 does) fails on a pipe and, on a
+// directory, asks for a 2^63-byte buffer.
 std::string readWholeFile(const std::string& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-    throw ConfigError(path + ":0: cannot open the file (" + (ec ? ec.message() : "no such file") + ")");
-  if (std::filesystem::is_directory(status)) throw ConfigError(path + ":0: is a directory, expected a TOML file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ":0: cannot open the file");
-  noteInputFile(path);
   std::string text;
-  char buffer[65536];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFileBytes)
-      throw ConfigError(path + ":0: file larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB, expected a TOML config file");
+  try {
+    text = readDataFile(path, "TOML file");
+  } catch (const std::runtime_error& e) {
+    throw ConfigError(e.what());
   }
-  if (in.bad()) throw ConfigError(path + ":0: cannot read the file");
+  noteInputFile(path);
   return text;
 }
 
