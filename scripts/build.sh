@@ -9,3 +9,16 @@ else
   cmake "$build" >/dev/null  # re-configure if a previous configure failed or files changed
 fi
 cmake --build "$build" -j "${BDFCAR_JOBS:-2}" "$@"
+# The Python package where Debian's python3 finds it (`import bdfcar` with no
+# path set): the README's build only, not the other flavours' folders.
+if [ -z "${BDFCAR_BUILD_DIR:-}" ] && grep -q '^BDFCAR_PYTHON_INSTALL_DIR:' "$build/CMakeCache.txt"; then
+  site=$(sed -n 's/^BDFCAR_PYTHON_INSTALL_DIR:PATH=//p' "$build/CMakeCache.txt")
+  parent=$site
+  while [ ! -e "$parent" ]; do parent=$(dirname "$parent"); done
+  if [ -w "$parent" ]; then
+    cmake --install "$build" --component python >/dev/null
+    echo "build: the bdfcar Python module is installed in $site"
+  else
+    echo "build: $site is not writable: use PYTHONPATH=$build/python (or run as root)"
+  fi
+fi

@@ -281,6 +281,12 @@ bench_table() {
   BDFCAR_BUILD_DIR="$build" bash "$root/scripts/soak.sh" "$tmp" 2>&1 | grep -E '^(soak|constraint|resident)'
   echo '```'
   echo
-  echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared VM."
 } >> "$out"
+
+# The Python module's timings (issue 29's targets), when it is built.
+if [ -d "$build/python/bdfcar" ]; then
+  py=$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
+  { PYTHONPATH="$build/python" "${py:-python3}" "$root/python/bench/bench_python.py" "$repeats"; echo; } >> "$out"
+fi
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared VM." >> "$out"
 echo "wrote $out"

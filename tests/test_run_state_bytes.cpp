@@ -126,6 +126,22 @@ TEST(RunStateBytesErrors, RefusedWithWhatIsWrong) {
   scenario::Simulation other(spec("scenarios/jturn.toml", "vehicles/paper.toml"));
   other.prepare();
   refused(other.saveBytes(), "another vehicle or rung");
+  // Another car whose model has this one's sizes (both cars' planar rungs:
+  // 12 coordinates, 3 rack drivers): refused by the models' fingerprint.
+  scenario::ScenarioSpec planarSedan = spec("scenarios/jturn.toml", "vehicles/sedan.toml");
+  scenario::ScenarioSpec planarPaper = spec("scenarios/jturn.toml", "vehicles/paper.toml");
+  ASSERT_TRUE(scenario::parseFidelity("planar", planarSedan.fidelity));
+  ASSERT_TRUE(scenario::parseFidelity("planar", planarPaper.fidelity));
+  scenario::Simulation sedanPlanar(planarSedan), paperPlanar(planarPaper);
+  sedanPlanar.prepare();
+  paperPlanar.prepare();
+  ASSERT_EQ(sedanPlanar.save().integrator.history[0].q.size(), paperPlanar.save().integrator.history[0].q.size());
+  try {
+    sedanPlanar.restoreBytes(paperPlanar.saveBytes());
+    ADD_FAILURE() << "a planar paper car's state accepted by a planar sedan";
+  } catch (const scenario::RunStateBytesError& e) {
+    EXPECT_NE(std::string(e.what()).find("model fingerprint"), std::string::npos) << e.what();
+  }
   // And a rung this simulation has not got.
   scenario::RunState s = before;
   s.rung = 3;

@@ -51,7 +51,7 @@ void Run::record() {
   if (!config_.sample) return;
   TelemetryInputs ti = rowInputs();
   ti.switchJump = sim_.takeSwitchJump();
-  if (telemetry_) telemetry_->write(sample_, ti);
+  writeRow(ti);
   if (config_.keepSamples) {
     samples_.push_back(sample_);
     steerInputs_.push_back(ti.steer);
@@ -120,7 +120,12 @@ void Run::restoreSnapshot(const Snapshot& s) {
 // The first row of a new segment: the state the run went back to.
 void Run::startSegment() {
   ++segment_;
-  if (telemetry_ && config_.sample) telemetry_->write(sample_, rowInputs());
+  if (config_.sample) writeRow(rowInputs());
+}
+
+void Run::writeRow(const TelemetryInputs& in) {
+  if (telemetry_) telemetry_->write(sample_, in);
+  if (config_.onRow) config_.onRow(sample_, in);
 }
 
 // A divergence in a rewindable run: back to the last good snapshot. A

@@ -31,6 +31,9 @@ struct RunOptions {
   bool keepStepCost = true;         // keep every step's wall time (RunResult::stepSeconds)
   // Called after each recorded sample (e.g. a course judge).
   std::function<void(const vehicle::VehicleSample&)> onSample;
+  // Called with every telemetry row (the file's, when there is one): the
+  // sample and the row's other quantities (TelemetryRowMaker makes the row).
+  std::function<void(const vehicle::VehicleSample&, const TelemetryInputs&)> onRow;
   // Rewind: keep the initial state and a snapshot every snapshotInterval of
   // simulated time for the last snapshotHistory; a divergence then resets to
   // the last good snapshot (a message says so) instead of ending the run.
@@ -135,6 +138,7 @@ class Run {
   Snapshot snapshot();
   void restoreSnapshot(const Snapshot& s);
   void record();
+  void writeRow(const TelemetryInputs& in);  // to the file and onRow
   TelemetryInputs rowInputs() const;
   void startSegment();
   void absorbDivergence(const integ::StepReport& rep);

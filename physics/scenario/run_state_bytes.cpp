@@ -1,5 +1,6 @@
 #include "scenario/run_state_bytes.h"
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <type_traits>
@@ -140,6 +141,7 @@ void wheel(IO& io, W& w) {
 
 template <class IO, class S>
 void fields(IO& io, S& s) {
+  io.field("model fingerprint", s.model);
   const std::uint64_t points = io.count("integrator history", s.integrator.history.size(), kMaxHistory);
   if constexpr (!std::is_const_v<S>) s.integrator.history.resize(points);
   for (auto& p : s.integrator.history) solutionPoint(io, p);
@@ -216,6 +218,13 @@ RunState runStateFromBytes(const std::vector<char>& bytes) {
 std::uint64_t hashRunState(const RunState& s) { return vehicle::hashBytes(runStateToBytes(s)); }
 
 std::optional<std::string> Simulation::misfit(const RunState& s) const {
+  if (s.model != modelFingerprint_) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "a state of another vehicle or rung (model fingerprint %016llx, this simulation's %016llx)",
+                  static_cast<unsigned long long>(s.model), static_cast<unsigned long long>(modelFingerprint_));
+    return std::string(text);
+  }
   if (s.rung < 0 || s.rung >= rungCount())
     return "rung " + std::to_string(s.rung) + " of a simulation with " + std::to_string(rungCount());
   const integ::DaeSizes n = rungs_[static_cast<size_t>(s.rung)].dae->sizes();

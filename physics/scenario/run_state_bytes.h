@@ -9,7 +9,8 @@
 // (uint64), the payload, the payload's FNV-1a 64 hash. A state of another
 // format version, a truncated or corrupted one, or one with bytes left over
 // is refused with a RunStateBytesError saying which; whether the state fits
-// a simulation (its rung and sizes) is Simulation::restoreBytes' check.
+// a simulation (its models' fingerprint, rung and sizes) is
+// Simulation::restoreBytes' check.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +22,8 @@
 
 namespace bdfcar::scenario {
 
-inline constexpr std::uint32_t kRunStateFormat = 1;
+// 2: the model fingerprint (RunState::model) first.
+inline constexpr std::uint32_t kRunStateFormat = 2;
 
 class RunStateBytesError : public std::runtime_error {
  public:

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "multibody/kinematics.h"
+#include "vehicle/derivation_cache.h"
 #include "vehicle/motion_ratio.h"
 #include "portable_math.h"
 
@@ -91,6 +92,9 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     policy_.emplace(*world_->terrain, world_->planar->model.bodies[world_->planar->layout.base].inParent.origin.z(),
                     offsets, tyres, world_->planarLevel);
   }
+  vehicle::ByteBuffer models;
+  for (const Rung& r : rungs_) models.put(vehicle::derivationFingerprint(*r.vehicle));
+  modelFingerprint_ = vehicle::hashBytes(models.bytes);
   activate(0);
   if (veh.spec.powertrain) transmission_.emplace(*veh.spec.powertrain);
   if (spec.speedControl.enabled)
@@ -354,6 +358,7 @@ std::optional<std::string> Simulation::offLevelGround() const {
 
 RunState Simulation::save() {
   RunState s;
+  s.model = modelFingerprint_;
   s.integrator = integrator_->save();
   s.forces = forces_->state();
   s.rack = rack_.segment;

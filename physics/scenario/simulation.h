@@ -14,6 +14,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -90,6 +91,10 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle:
 // copyable, comparable, restorable. The Jacobian is not part of it (a run
 // continued from a state evaluates a fresh one).
 struct RunState {
+  // The models it is a state of: Simulation's fingerprint of its rungs'
+  // vehicles (bodies, joints, springs, layout), so that a state of another
+  // car with the same sizes is refused, not run.
+  std::uint64_t model = 0;
   integ::IntegratorState integrator;
   vehicle::VehicleForces::State forces;
   RackSegment rack;
@@ -236,6 +241,7 @@ class Simulation {
   std::shared_ptr<const World> world_;
   std::unique_ptr<Signal> steering_, throttle_, brake_;
   std::vector<Rung> rungs_;
+  std::uint64_t modelFingerprint_ = 0;  // RunState::model of this simulation's states
   int active_ = 0;
   // The active rung's parts.
   vehicle::VehicleForces* forces_ = nullptr;

@@ -13,34 +13,11 @@
 #include <vector>
 
 #include "scenario/row_file.h"
+#include "scenario/telemetry_row.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_sample.h"
 
 namespace bdfcar::scenario {
-
-// A powertrain's channels (columns after the others, on a car with one).
-struct PowertrainChannels {
-  double engineRpm = 0;      // crank relative to the chassis
-  int gear = 0;              // -1 reverse, 0 neutral, 1..n
-  double clutch = 0;         // [0, 1] engagement (1 closed)
-  double clutchSlipRpm = 0;  // crank less gearbox input
-  double engineTorque = 0;   // N m, combustion less friction
-  double clutchTorque = 0;   // N m into the gearbox
-  double throttle = 0;       // [0, 1] at the engine: the driver's, the speed hold's, closed during a shift
-  double handbrake = 0;      // [0, 1]
-};
-
-// Quantities of a row that are not in the vehicle sample.
-struct TelemetryInputs {
-  double steer = 0;      // normalised steering input s
-  double throttle = 0, brake = 0;
-  int newtonIterations = 0;
-  double newtonCorrection = 0;  // weighted norm of the last correction (1 = tolerance)
-  int segment = 0;              // a drive's segment: +1 at each reset, rewind or divergence reset
-  int fidelity = 0;             // the model driving: vehicle::Fidelity (0 linkage, 1 kinematic, 2 planar)
-  double switchJump = 0;        // m, the chassis moved by rung switches since the last row (`auto`)
-  PowertrainChannels powertrain;  // written when the vehicle has a powertrain
-};
 
 // Rows are formatted and written by a thread of the writer's own, so that
 // the stepping thread pays for a copy of the sample, not for 86 numbers
@@ -65,10 +42,10 @@ class TelemetryWriter {
   void flush();
   void close();
   const std::string& path() const { return file_.path(); }
-  static const char* header();
-  // The header of a vehicle's file: header(), then powertrainHeader() on a car with a powertrain.
-  static std::string header(const vehicle::Vehicle& v);
-  static const char* powertrainHeader();
+  // The header (TelemetryRowMaker's names).
+  static const char* header() { return TelemetryRowMaker::header(); }
+  static std::string header(const vehicle::Vehicle& v) { return TelemetryRowMaker::header(v); }
+  static const char* powertrainHeader() { return TelemetryRowMaker::powertrainHeader(); }
 
  private:
   struct Row {
@@ -83,9 +60,7 @@ class TelemetryWriter {
   void rethrowWriterError();
 
   RowFile file_;
-  const vehicle::Vehicle& v_;
-  bool first_ = true;  // writer thread
-  double z0_ = 0, rack0_ = 0;
+  TelemetryRowMaker maker_;  // writer thread
 
   std::vector<Row> queue_;  // a ring of kQueueRows
   std::size_t head_ = 0, size_ = 0;

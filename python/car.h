@@ -1,0 +1,81 @@
+// bdfcar's car as Python sees it (python/module.cpp binds it): a scenario's
+// simulation stepped tick by tick with a person's (an agent's) input or the
+// scenario's own driver, its state as bytes, its observation and telemetry
+// row as numbers. Plain C++ (no Python here), so that a vector of cars can
+// be stepped on worker threads with the interpreter's lock released.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenario/simulation.h"
+#include "scenario/telemetry_row.h"
+#include "scenario_overrides.h"
+
+namespace bdfcar::python {
+
+// A step that failed (diverged, a state check): the car must be reset or
+// restored before it steps again.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The compact observation (observationNames()): chassis pose, velocities,
+// accelerations and the steering input, SI units.
+constexpr int kObservationSize = 13;
+const std::vector<std::string>& observationNames();
+
+class Car {
+ public:
+  // Loads the scenario (with the overrides: vehicle, fidelity, step,
+  // duration, --set settings), builds its world, settles the car.
+  Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides);
+  // Another car in the same world (terrain and vehicle built once, shared
+  // read-only), settled the same way: the state of `other` at its start.
+  explicit Car(const Car& other);
+
+  // Back to the state after settling (the start of the manoeuvre).
+  void reset();
+  // One driver tick: the given input (clamped to its range: steer [-1, 1],
+  // throttle and brake [0, 1]) or, with nullopt, the scenario's own driver.
+  // Throws SimulationError (and stays failed) when a step fails.
+  void tick(const std::optional<scenario::DriverInput>& input);
+  bool failed() const { return !failure_.empty(); }
+  const std::string& failure() const { return failure_; }
+
+  double time() const { return sim_->time(); }
+  double duration() const { return sim_->spec().duration; }
+  double tickSeconds() const { return sim_->spec().tick; }
+  int stepsPerTick() const { return sim_->stepsPerTick(); }
+  // The fidelity rung driving now (vehicle::Fidelity: 0 linkage, 1 kinematic, 2 planar).
+  int fidelity() const { return static_cast<int>(sim_->vehicle().fidelity); }
+  const scenario::Simulation& simulation() const { return *sim_; }
+
+  // The observation of the current state (kObservationSize values).
+  void observation(double* out);
+  // The telemetry row of the current state, as the CSV would print it
+  // (TelemetryRowMaker; the references of dz_com_m and rack_m are the
+  // start's).
+  int telemetryColumns() const { return rowMaker_.columns(); }
+  std::vector<std::string> telemetryNames() const { return rowMaker_.names(); }
+  void telemetryRow(double* out);
+
+  std::vector<char> save();
+  // Throws scenario::RunStateBytesError (bytes of another car, corrupted...).
+  void restore(const std::vector<char>& bytes);
+
+ private:
+  void startRow();
+
+  std::shared_ptr<const scenario::World> world_;
+  std::unique_ptr<scenario::Simulation> sim_;
+  scenario::RunState initial_;
+  scenario::TelemetryRowMaker rowMaker_;
+  integ::StepReport last_;
+  std::string failure_;
+};
+
+}  // namespace bdfcar::python
