@@ -88,6 +88,26 @@ void Car::telemetryRow(double* out) {
   std::copy(values.begin(), values.begin() + rowMaker_.columns(), out);
 }
 
+vehicle::VehicleView Car::view() {
+  sim_->sample();
+  return sim_->view();
+}
+
+vehicle::HudInfo Car::hud() {
+  const vehicle::VehicleSample s = sim_->sample();
+  vehicle::HudInfo h;
+  h.time = s.t;
+  h.speed = s.speed;
+  h.lateralAcceleration = s.ay;
+  h.longitudinalAcceleration = s.ax;
+  h.yawRate = s.yawRate;
+  h.steeringWheelAngle = sim_->vehicle().spec.steering.steeringWheelFull * sim_->steerAt(s.t);
+  h.throttle = sim_->lastInput().throttle;
+  h.brake = sim_->lastInput().brake;
+  h.realTimeLabel = "";
+  return h;
+}
+
 std::vector<char> Car::save() { return sim_->saveBytes(); }
 
 void Car::restore(const std::vector<char>& bytes) {

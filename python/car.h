@@ -53,6 +53,10 @@ class Car {
   // The fidelity rung driving now (vehicle::Fidelity: 0 linkage, 1 kinematic, 2 planar).
   int fidelity() const { return static_cast<int>(sim_->vehicle().fidelity); }
   const scenario::Simulation& simulation() const { return *sim_; }
+  scenario::Simulation& simulation() { return *sim_; }
+  // What a frame draws: the poses now, and the HUD's figures.
+  vehicle::VehicleView view();
+  vehicle::HudInfo hud();
 
   // The observation of the current state (kObservationSize values).
   void observation(double* out);

@@ -4,9 +4,9 @@
 
 namespace bdfcar::app {
 
-render::SceneConfig sceneConfigFor(DriveSession& session, bool hud) {
+render::SceneConfig sceneConfigFor(const scenario::Simulation& sim, bool hud) {
   render::SceneConfig cfg;
-  const scenario::ScenarioSpec& spec = session.spec();
+  const scenario::ScenarioSpec& spec = sim.spec();
   if (!spec.terrainFile.empty()) {
     cfg.terrain = terrain::loadTerrain(spec.terrainFile);
   } else {
@@ -14,8 +14,8 @@ render::SceneConfig sceneConfigFor(DriveSession& session, bool hud) {
     cfg.terrain.road.present = true;
     cfg.terrain.road.centreY = spec.startY;
   }
-  cfg.course = session.simulation().course();
-  cfg.geometry = session.simulation().vehicle().spec.geometry;
+  cfg.course = sim.course();
+  cfg.geometry = sim.vehicle().spec.geometry;
   cfg.assetRoot = BDFCAR_ASSET_DIR;
   cfg.hud = hud;
   return cfg;

@@ -7,6 +7,9 @@
 
 namespace bdfcar::app {
 
-render::SceneConfig sceneConfigFor(DriveSession& session, bool hud = true);
+render::SceneConfig sceneConfigFor(const scenario::Simulation& sim, bool hud = true);
+inline render::SceneConfig sceneConfigFor(DriveSession& session, bool hud = true) {
+  return sceneConfigFor(session.simulation(), hud);
+}
 
 }  // namespace bdfcar::app

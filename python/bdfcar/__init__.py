@@ -13,12 +13,31 @@ Environments with the Gymnasium conventions (no gymnasium needed):
 LaneChangeEnv and VectorLaneChangeEnv (bdfcar.env). docs/API.md.
 """
 import os
+import sys
 
 from ._bdfcar import (ASSET_DIR, OBSERVATION_NAMES, Car, ConfigError, OutputError, SimulationError, StateError,
                       VehicleError, __version__, observe_many, set_threads, threads, tick_many)
 from ._bdfcar import run as _run
 from .telemetry import Telemetry
 from .env import Box, LaneChangeEnv, VectorLaneChangeEnv
+
+
+def Camera(car, width=640, height=360, camera="chase", hud=False):
+    """A headless camera on the car (OSMesa, no display needed): camera.render() draws the car as it
+    is now into a (height, width, 3) uint8 RGB array. camera: chase, hood, orbit or top-down."""
+    return _load_frames().Camera(car, width, height, camera, hud)
+
+
+def _load_frames():
+    """The frames module, loaded on first use with its libraries in the global scope: OpenSceneGraph
+    looks GL functions up there (dlsym), and must find libOSMesa's, not another libGL's."""
+    flags = sys.getdlopenflags()
+    sys.setdlopenflags(flags | os.RTLD_GLOBAL)
+    try:
+        from . import _frames as module
+    finally:
+        sys.setdlopenflags(flags)
+    return module
 
 
 def asset(relative):
@@ -35,6 +54,6 @@ def run(scenario, *, out=None, vehicle=None, fidelity=None, step=None, duration=
     return Telemetry(r)
 
 
-__all__ = ["ASSET_DIR", "OBSERVATION_NAMES", "Box", "Car", "ConfigError", "LaneChangeEnv", "OutputError",
+__all__ = ["ASSET_DIR", "OBSERVATION_NAMES", "Box", "Camera", "Car", "ConfigError", "LaneChangeEnv", "OutputError",
            "SimulationError", "StateError", "Telemetry", "VectorLaneChangeEnv", "VehicleError", "__version__",
            "asset", "observe_many", "run", "set_threads", "threads", "tick_many"]

@@ -8,6 +8,7 @@ docs/RESULTS.md (scripts/report.sh appends it). Medians over REPEATS runs; ratio
   (the same N ticks looped in C++), per call: what the Python call adds to the step.
 - vector stepping: 64 planar cars through tick_many, car-steps per second on 1 and 2 threads.
 - reset from a saved state: car.restore(bytes).
+- a headless frame (OSMesa) of 640x360 to a NumPy array, the car moved 30 ms between frames.
 """
 import statistics
 import sys
@@ -72,6 +73,18 @@ def main(repeats=5):
         rates[threads] = median_of(repeats, batch)
     bdfcar.set_threads(2)
 
+    frame_car = bdfcar.Car(bdfcar.asset("scenarios/iso_lane_change.toml"), fidelity="planar")
+    camera = bdfcar.Camera(frame_car, 640, 360)
+    frame_times = []
+    for _ in range(30 * repeats):
+        frame_car.tick(ticks=3)
+        t0 = time.perf_counter()
+        camera.render()
+        frame_times.append(time.perf_counter() - t0)
+    frame_times.sort()
+    frame_p50 = frame_times[len(frame_times) // 2]
+    frame_p99 = frame_times[min(len(frame_times) - 1, int(0.99 * len(frame_times)))]
+
     print("## 12. Python (`import bdfcar`, issue 29)")
     print()
     print(f"The planar rung on the lane change ({scenario.split('/assets/')[-1]}), one 10 ms tick per call; "
@@ -87,8 +100,8 @@ def main(repeats=5):
     print(f"| `bdfcar.tick_many`, 64 cars, 2 threads | {rates[2]:,.0f} car-steps/s ({rates[2] / rates[1]:.2f}x "
           f"the one thread) | >= 50,000 |")
     print(f"| `car.restore(state)` (reset from saved bytes) | {restore_s * 1e6:.2f} us | <= 20 us |")
-    print()
-    print("Headless frames as NumPy arrays are not built yet (issue 29, item 4).")
+    print(f"| `bdfcar.Camera(car, 640, 360).render()` to a NumPy array ({camera.renderer}) | p50 "
+          f"{frame_p50 * 1e3:.1f} ms, p99 {frame_p99 * 1e3:.1f} ms | report p50 |")
 
 
 if __name__ == "__main__":

@@ -8,12 +8,12 @@ if "PYTHONPATH" not in os.environ:  # run by hand: the default build folder's pa
     sys.path.insert(0, os.path.join(ROOT, "build", "python"))
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def root():
     return ROOT
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def cli(root):
     return os.environ.get("BDFCAR_CLI", os.path.join(root, "build", "app", "bdfcar"))
 

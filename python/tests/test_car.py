@@ -15,9 +15,7 @@ def steer_signal(i, k):
 
 
 @pytest.fixture(scope="module")
-def lane_car():
-    import os
-    root = os.environ.get("BDFCAR_ROOT")
+def lane_car(root):
     return bdfcar.Car(scenario(root, "lane_change.toml"), fidelity="planar")
 
 
