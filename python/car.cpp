@@ -30,8 +30,9 @@ std::unique_ptr<scenario::Simulation> settled(const std::shared_ptr<const scenar
 
 }  // namespace
 
-Car::Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides)
-    : world_(scenario::buildWorld(app::loadScenario(scenarioPath, overrides))),
+Car::Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides, const Car* sceneOf)
+    : world_(scenario::buildWorld(app::loadScenario(scenarioPath, overrides),
+                                  sceneOf ? sceneOf->world_->scene : nullptr)),
       sim_(settled(world_)),
       initial_(sim_->save()),
       rowMaker_(world_->vehicle) {

@@ -32,7 +32,9 @@ class Car {
  public:
   // Loads the scenario (with the overrides: vehicle, fidelity, step,
   // duration, --set settings), builds its world, settles the car.
-  Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides);
+  // sceneOf: joins that car's scene (its ground, built once) instead of
+  // building one; the scenario must name the same ground.
+  Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides, const Car* sceneOf = nullptr);
   // Another car in the same world (terrain and vehicle built once, shared
   // read-only), settled the same way: the state of `other` at its start.
   explicit Car(const Car& other);

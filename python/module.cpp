@@ -212,16 +212,18 @@ PYBIND11_MODULE(_bdfcar, m) {
   py::class_<python::Car>(m, "Car", "A scenario's car, stepped one driver tick at a time")
       .def(py::init([](const std::string& scenario, std::optional<std::string> vehicle,
                        std::optional<std::string> fidelity, std::optional<double> step,
-                       std::optional<double> duration, std::vector<std::string> settings) {
+                       std::optional<double> duration, std::vector<std::string> settings,
+                       const python::Car* scene) {
              const app::ScenarioOverrides ov = overrides(vehicle, fidelity, step, duration, settings);
              py::gil_scoped_release release;
-             return std::make_unique<python::Car>(scenario, ov);
+             return std::make_unique<python::Car>(scenario, ov, scene);
            }),
            py::arg("scenario"), py::kw_only(), py::arg("vehicle") = py::none(), py::arg("fidelity") = py::none(),
            py::arg("step") = py::none(), py::arg("duration") = py::none(),
-           py::arg("settings") = std::vector<std::string>{},
+           py::arg("settings") = std::vector<std::string>{}, py::arg("scene") = py::none(),
            "Loads the scenario file (with a vehicle file, a fidelity rung, a step, a duration and KEY=VALUE "
-           "settings replacing its own), builds the world and settles the car")
+           "settings replacing its own), builds the world and settles the car; scene=another car: this one "
+           "joins that car's scene (its ground, built once; the scenario must name the same ground)")
       .def("copy", [](const python::Car& c) { return std::make_unique<python::Car>(c); },
            "Another car in the same world (built once, shared), at the start")
       .def("reset", &python::Car::reset, py::call_guard<py::gil_scoped_release>(),

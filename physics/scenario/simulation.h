@@ -60,11 +60,29 @@ class PrepareInterrupted : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// What a scenario builds once and never changes while it runs.
+// What a scene builds once and every car in it shares, read-only: the
+// ground (the terrain file with its Bullet shapes, or the graded plane).
+// Cars are added to a scene by building their worlds with it (buildWorld's
+// scene argument); each car has its own vehicle, rung, driver and state.
+struct Scene {
+  std::string terrainFile;   // as the scenario names it (empty: the plane)
+  double groundGrade = 0;    // of the plane
+  std::shared_ptr<const terrain::Terrain> terrain;
+  // Whether a scenario's ground is this scene's (the same file or plane).
+  bool holds(const ScenarioSpec& spec) const;
+};
+
+// Loads the scenario's terrain file (or makes its plane); throws on bad data.
+std::shared_ptr<const Scene> buildScene(const ScenarioSpec& spec);
+
+// What a scenario builds once and never changes while it runs: a car (its
+// vehicle and rungs, its course, its scenario) in a scene.
 struct World {
   ScenarioSpec spec;
   vehicle::Vehicle vehicle;
-  std::unique_ptr<const terrain::Terrain> terrain;  // Bullet shapes built here, once
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const terrain::Terrain> terrain;  // the scene's
+  // The ISO 3888 course is the car's: its lanes are sized to the car's width.
   std::optional<Iso3888Course> course;
   int stepsPerTick = 1;                             // spec.tick / spec.integrator.step
   // The derived model against the linkage, when the vehicle is not the linkage.
@@ -82,6 +100,9 @@ struct World {
 // Loads the vehicle and terrain files and builds the world; throws on bad
 // data or a step that does not divide the tick.
 std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec);
+// A car in a scene built before (its terrain shared, not loaded again);
+// throws std::runtime_error when the scenario names another ground.
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, std::shared_ptr<const Scene> scene);
 // A world for one model already derived from `linkage` (the certificate's
 // runs): the scenario's terrain, course and step, the rung as given.
 std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle::Vehicle& linkage,

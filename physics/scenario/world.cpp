@@ -1,7 +1,8 @@
-// Building a World (simulation.h): the vehicle file turned into the rung the
-// scene asks for (and, under `auto`, the certificate and the rungs it
-// allows), the terrain with its Bullet shapes, the planar road plane, the
-// ISO course; once per scenario, const while it runs.
+// Building a Scene (the terrain with its Bullet shapes, shared by the cars
+// in it) and a World (simulation.h): the vehicle file turned into the rung
+// the scenario asks for (and, under `auto`, the certificate and the rungs it
+// allows), the planar road plane, the ISO course; once per car, const while
+// it runs.
 #include "scenario/simulation.h"
 
 #include <algorithm>
@@ -30,16 +31,20 @@ std::unique_ptr<terrain::Terrain> loadGround(const ScenarioSpec& spec) {
   return terrain::makeTerrain(terrain::loadTerrain(spec.terrainFile));
 }
 
-
-// What every world needs besides its vehicle: the step against the tick, the
-// terrain, the planar road plane, the course.
-void finishWorld(World& w) {
-  const ScenarioSpec& spec = w.spec;
-  w.stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
-  if (w.stepsPerTick == 0)
+void checkStep(const ScenarioSpec& spec) {
+  if (stepsPerTick(spec.tick, spec.integrator.step) == 0)
     throw std::runtime_error(spec.sourceFile + ": the step of " + std::to_string(spec.integrator.step * 1e3) +
                              " ms does not divide the driver's tick of " + std::to_string(spec.tick * 1e3) + " ms");
-  w.terrain = loadGround(spec);
+}
+
+// What every world needs besides its vehicle: the step against the tick, the
+// scene (its own, or the one given), the planar road plane, the course.
+void finishWorld(World& w, std::shared_ptr<const Scene> scene = nullptr) {
+  const ScenarioSpec& spec = w.spec;
+  checkStep(spec);
+  w.stepsPerTick = stepsPerTick(spec.tick, spec.integrator.step);
+  w.scene = scene ? std::move(scene) : buildScene(spec);
+  w.terrain = w.scene->terrain;
   // The planar model's road is the level plane through the ground at the start.
   const terrain::Hit g = w.terrain->castRay(Eigen::Vector3d(spec.startX, spec.startY, 1e3), -Eigen::Vector3d::UnitZ(), 2e3);
   if (w.vehicle.fidelity == vehicle::Fidelity::Planar) vehicle::setPlanarGround(w.vehicle, g.hit ? g.point.z() : 0.0);
@@ -50,12 +55,30 @@ void finishWorld(World& w) {
 
 }  // namespace
 
-std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
+bool Scene::holds(const ScenarioSpec& spec) const {
+  return spec.terrainFile == terrainFile && (!terrainFile.empty() || spec.groundGrade == groundGrade);
+}
+
+std::shared_ptr<const Scene> buildScene(const ScenarioSpec& spec) {
+  auto s = std::make_shared<Scene>();
+  s->terrainFile = spec.terrainFile;
+  s->groundGrade = spec.groundGrade;
+  s->terrain = loadGround(spec);
+  return s;
+}
+
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) { return buildWorld(spec, nullptr); }
+
+std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, std::shared_ptr<const Scene> scene) {
+  if (scene && !scene->holds(spec))
+    throw std::runtime_error(spec.sourceFile + ": its ground (" +
+                             (spec.terrainFile.empty() ? std::string("the plane") : spec.terrainFile) +
+                             ") is not the scene's (" +
+                             (scene->terrainFile.empty() ? std::string("the plane") : scene->terrainFile) +
+                             "): a car joins a scene on the scene's ground");
   auto w = std::make_shared<World>();
   w->spec = spec;
-  if (stepsPerTick(spec.tick, spec.integrator.step) == 0) {
-    finishWorld(*w);  // throws, naming the step and the tick
-  }
+  checkStep(spec);  // before the vehicle is derived (seconds), naming the step and the tick
   w->vehicle = vehicle::buildVehicle(vehicle::loadVehicleFile(spec.vehicleFile, spec.vehicleSettings));
   // Steering in engineering units becomes the normalised input, from the linkage's scales.
   w->spec.steering = normalisedSteering(spec.steering, w->vehicle);
@@ -101,7 +124,7 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec) {
     w->vehicle = std::move(p.vehicle);
     w->kinematicCheck = p.kinematic.check;
   }
-  finishWorld(*w);
+  finishWorld(*w, std::move(scene));
   return w;
 }
 

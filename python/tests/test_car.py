@@ -117,3 +117,23 @@ def test_bad_calls_raise_clear_exceptions(lane_car, root):
     # After all that the car still steps, and its state is intact.
     car.restore(state)
     car.tick(steer=0.1)
+
+
+def test_two_cars_in_one_scene_each_run_as_alone(root):
+    """Another vehicle on another rung joins the first car's scene; stepped in turn, each gives its
+    run alone."""
+    alone_a = bdfcar.Car(scenario(root, "jturn.toml"), fidelity="kinematic")
+    alone_b = bdfcar.Car(scenario(root, "lane_change.toml"), vehicle=f"{root}/assets/vehicles/paper.toml",
+                         fidelity="planar")
+    a = bdfcar.Car(scenario(root, "jturn.toml"), fidelity="kinematic")
+    b = bdfcar.Car(scenario(root, "lane_change.toml"), vehicle=f"{root}/assets/vehicles/paper.toml",
+                   fidelity="planar", scene=a)
+    for _ in range(150):
+        a.tick()
+        b.tick(steer=0.1)
+        alone_a.tick()
+        alone_b.tick(steer=0.1)
+    assert a.telemetry_row().tobytes() == alone_a.telemetry_row().tobytes()
+    assert b.telemetry_row().tobytes() == alone_b.telemetry_row().tobytes()
+    with pytest.raises(RuntimeError, match="not the scene's"):
+        bdfcar.Car(scenario(root, "proving_ground/hill_stop.toml"), fidelity="planar", scene=a)
