@@ -13,12 +13,10 @@
 #include <memory>
 #include <mutex>
 
-#include "car.h"
+#include "car_core.h"
 #include "car_pool.h"
-#include "config/input_files.h"
 #include "config/toml_reader.h"
 #include "scenario/row_file.h"
-#include "scenario/run.h"
 #include "scenario/run_state_bytes.h"
 
 namespace py = pybind11;
@@ -31,46 +29,23 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 app::ScenarioOverrides overrides(const std::optional<std::string>& vehicle, const std::optional<std::string>& fidelity,
                                  std::optional<double> step, std::optional<double> duration,
                                  const std::vector<std::string>& settings) {
-  app::ScenarioOverrides ov;
-  ov.vehicle = vehicle;
-  ov.fidelity = fidelity;
-  ov.step = step;
-  ov.duration = duration;
-  ov.settings = settings;
-  if (fidelity) {
-    scenario::FidelitySpec f;
-    if (!scenario::parseFidelity(*fidelity, f))
-      throw config::ConfigError("fidelity: expected linkage, kinematic, planar or auto, got \"" + *fidelity + "\"");
-  }
-  return ov;
+  return api::carOverrides(vehicle, fidelity, step, duration, settings);
 }
 
-double checked(const char* name, double value, double lo, double hi) {
-  if (!std::isfinite(value))
-    throw py::value_error(std::string(name) + " must be a finite number, got " + std::to_string(value));
-  return std::clamp(value, lo, hi);
-}
+using api::driverInput;
 
-scenario::DriverInput driverInput(double steer, double throttle, double brake) {
-  scenario::DriverInput in;
-  in.steer = checked("steer", steer, -1.0, 1.0);
-  in.throttle = checked("throttle", throttle, 0.0, 1.0);
-  in.brake = checked("brake", brake, 0.0, 1.0);
-  return in;
-}
-
-std::vector<python::Car*> carList(const py::list& cars) {
-  std::vector<python::Car*> out;
-  for (const py::handle& h : cars) out.push_back(h.cast<python::Car*>());
+std::vector<api::CarCore*> carList(const py::list& cars) {
+  std::vector<api::CarCore*> out;
+  for (const py::handle& h : cars) out.push_back(h.cast<api::CarCore*>());
   // One car twice would be stepped by two threads at once.
-  std::vector<python::Car*> sorted = out;
+  std::vector<api::CarCore*> sorted = out;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
     throw py::value_error("the same Car is in the list twice: each car steps once per call");
   return out;
 }
 
-const scenario::Iso3888Course& course(const python::Car& c) {
+const scenario::Iso3888Course& course(const api::CarCore& c) {
   if (!c.simulation().course()) throw py::value_error("this scenario has no [course]");
   return *c.simulation().course();
 }
@@ -89,7 +64,7 @@ std::mutex& poolMutex() {
 // Ticks every car once (actions: (N, 3) steer, throttle, brake, or None for
 // the scenarios' own drivers); a car whose step fails is marked, not raised.
 py::array_t<bool> tickMany(const py::list& cars, const std::optional<Array>& actions) {
-  std::vector<python::Car*> list = carList(cars);
+  std::vector<api::CarCore*> list = carList(cars);
   const int n = static_cast<int>(list.size());
   std::vector<scenario::DriverInput> inputs;
   if (actions) {
@@ -102,7 +77,7 @@ py::array_t<bool> tickMany(const py::list& cars, const std::optional<Array>& act
   }
   for (int i = 0; i < n; ++i)
     if (list[i]->failed())
-      throw python::SimulationError("car " + std::to_string(i) + " failed (" + list[i]->failure() +
+      throw api::SimulationError("car " + std::to_string(i) + " failed (" + list[i]->failure() +
                                     "): reset() or restore() it before it steps again");
   py::array_t<bool> failed(n);
   bool* f = failed.mutable_data();
@@ -112,7 +87,7 @@ py::array_t<bool> tickMany(const py::list& cars, const std::optional<Array>& act
     pool().run(n, [&](int i) {
       try {
         list[i]->tick(actions ? std::optional(inputs[i]) : std::nullopt);
-      } catch (const python::SimulationError&) {
+      } catch (const api::SimulationError&) {
       }
       f[i] = list[i]->failed();
     });
@@ -121,45 +96,29 @@ py::array_t<bool> tickMany(const py::list& cars, const std::optional<Array>& act
 }
 
 py::array_t<double> observeMany(const py::list& cars) {
-  std::vector<python::Car*> list = carList(cars);
+  std::vector<api::CarCore*> list = carList(cars);
   const int n = static_cast<int>(list.size());
-  py::array_t<double> out({n, python::kObservationSize});
+  py::array_t<double> out({n, api::kObservationSize});
   double* o = out.mutable_data();
   {
     py::gil_scoped_release release;
     std::lock_guard lock(poolMutex());
-    pool().run(n, [&](int i) { list[i]->observation(o + i * python::kObservationSize); });
+    pool().run(n, [&](int i) { list[i]->observation(o + i * api::kObservationSize); });
   }
   return out;
 }
 
-// A whole scenario with its own driver, as `bdfcar run` runs it: the
-// telemetry rows (and the file at `out`, byte for byte the command's).
+// A whole scenario with its own driver, as `bdfcar run` runs it (api::runScenario).
 py::dict runScenario(const std::string& path, const std::optional<std::string>& out,
                      const app::ScenarioOverrides& ov) {
-  const scenario::ScenarioSpec spec = app::loadScenario(path, ov);
-  const std::string outPath = out.value_or("");
-  scenario::refuseOverwritingInputs(outPath, {path, spec.vehicleFile, spec.terrainFile});
-  std::vector<double> rows;
-  std::vector<std::string> names;
-  scenario::RunResult r;
+  api::RunTelemetry t;
   {
     py::gil_scoped_release release;
-    scenario::Simulation sim(spec);
-    scenario::refuseOverwritingInputs(outPath, {path, spec.vehicleFile, spec.terrainFile});
-    scenario::TelemetryRowMaker maker(sim.world().vehicle);
-    names = maker.names();
-    scenario::RunOptions opt;
-    opt.telemetryPath = outPath;
-    opt.keepStepCost = false;
-    opt.keepSamples = false;
-    opt.onRow = [&](const vehicle::VehicleSample& s, const scenario::TelemetryInputs& in) {
-      scenario::TelemetryRowMaker::Values v;
-      maker.fill(s, in, v);
-      rows.insert(rows.end(), v.begin(), v.begin() + maker.columns());
-    };
-    r = scenario::runScenario(sim, opt);
+    t = api::runScenario(path, ov, out.value_or(""));
   }
+  const std::vector<std::string>& names = t.columns;
+  const std::vector<double>& rows = t.rows;
+  const scenario::RunResult& r = t.result;
   const py::ssize_t cols = static_cast<py::ssize_t>(names.size());
   py::array_t<double> data({static_cast<py::ssize_t>(rows.size()) / cols, cols});
   std::copy(rows.begin(), rows.end(), data.mutable_data());
@@ -189,7 +148,7 @@ PYBIND11_MODULE(_bdfcar, m) {
   static py::exception<config::ConfigError> configError(m, "ConfigError", PyExc_ValueError);
   static py::exception<scenario::PrepareError> vehicleError(m, "VehicleError", PyExc_ValueError);
   static py::exception<scenario::RunStateBytesError> stateError(m, "StateError", PyExc_ValueError);
-  static py::exception<python::SimulationError> simulationError(m, "SimulationError", PyExc_RuntimeError);
+  static py::exception<api::SimulationError> simulationError(m, "SimulationError", PyExc_RuntimeError);
   static py::exception<scenario::OutputError> outputError(m, "OutputError", PyExc_OSError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -200,23 +159,23 @@ PYBIND11_MODULE(_bdfcar, m) {
       vehicleError(e.what());
     } catch (const scenario::RunStateBytesError& e) {
       stateError(e.what());
-    } catch (const python::SimulationError& e) {
+    } catch (const api::SimulationError& e) {
       simulationError(e.what());
     } catch (const scenario::OutputError& e) {
       outputError(e.what());
     }
   });
 
-  m.attr("OBSERVATION_NAMES") = python::observationNames();
+  m.attr("OBSERVATION_NAMES") = api::observationNames();
 
-  py::class_<python::Car>(m, "Car", "A scenario's car, stepped one driver tick at a time")
+  py::class_<api::CarCore>(m, "Car", "A scenario's car, stepped one driver tick at a time")
       .def(py::init([](const std::string& scenario, std::optional<std::string> vehicle,
                        std::optional<std::string> fidelity, std::optional<double> step,
                        std::optional<double> duration, std::vector<std::string> settings,
-                       const python::Car* scene) {
+                       const api::CarCore* scene) {
              const app::ScenarioOverrides ov = overrides(vehicle, fidelity, step, duration, settings);
              py::gil_scoped_release release;
-             return std::make_unique<python::Car>(scenario, ov, scene);
+             return std::make_unique<api::CarCore>(scenario, ov, scene);
            }),
            py::arg("scenario"), py::kw_only(), py::arg("vehicle") = py::none(), py::arg("fidelity") = py::none(),
            py::arg("step") = py::none(), py::arg("duration") = py::none(),
@@ -224,13 +183,13 @@ PYBIND11_MODULE(_bdfcar, m) {
            "Loads the scenario file (with a vehicle file, a fidelity rung, a step, a duration and KEY=VALUE "
            "settings replacing its own), builds the world and settles the car; scene=another car: this one "
            "joins that car's scene (its ground, built once; the scenario must name the same ground)")
-      .def("copy", [](const python::Car& c) { return std::make_unique<python::Car>(c); },
+      .def("copy", [](const api::CarCore& c) { return std::make_unique<api::CarCore>(c); },
            "Another car in the same world (built once, shared), at the start")
-      .def("reset", &python::Car::reset, py::call_guard<py::gil_scoped_release>(),
+      .def("reset", &api::CarCore::reset, py::call_guard<py::gil_scoped_release>(),
            "Back to the start of the manoeuvre")
       .def(
           "tick",
-          [](python::Car& c, std::optional<double> steer, double throttle, double brake, int ticks) {
+          [](api::CarCore& c, std::optional<double> steer, double throttle, double brake, int ticks) {
             std::optional<scenario::DriverInput> in;
             if (steer) in = driverInput(*steer, throttle, brake);
             if (ticks < 0) throw py::value_error("ticks must be 0 or more, got " + std::to_string(ticks));
@@ -243,46 +202,46 @@ PYBIND11_MODULE(_bdfcar, m) {
           "[0, 1] (clamped; NaN refused), or, with no steer, the scenario's own driver. Raises SimulationError "
           "when a step fails")
       .def("observation",
-           [](python::Car& c) {
-             py::array_t<double> out(python::kObservationSize);
+           [](api::CarCore& c) {
+             py::array_t<double> out(api::kObservationSize);
              c.observation(out.mutable_data());
              return out;
            },
            "The observation now (OBSERVATION_NAMES)")
       .def("telemetry_row",
-           [](python::Car& c) {
+           [](api::CarCore& c) {
              py::array_t<double> out(c.telemetryColumns());
              c.telemetryRow(out.mutable_data());
              return out;
            },
            "The telemetry row now (telemetry_names; docs/TELEMETRY.md)")
-      .def_property_readonly("telemetry_names", &python::Car::telemetryNames)
-      .def("save", [](python::Car& c) {
+      .def_property_readonly("telemetry_names", &api::CarCore::telemetryNames)
+      .def("save", [](api::CarCore& c) {
              const std::vector<char> b = c.save();
              return py::bytes(b.data(), b.size());
            }, "The run state as bytes (versioned, checksummed)")
       .def("restore",
-           [](python::Car& c, const py::bytes& b) {
+           [](api::CarCore& c, const py::bytes& b) {
              const std::string_view v = b;
              const std::vector<char> bytes(v.begin(), v.end());
              py::gil_scoped_release release;
              c.restore(bytes);
            },
            py::arg("state"), "Restores a state from save(); StateError for bytes of another car or none")
-      .def_property_readonly("time", &python::Car::time, "s, 0 at the start of the manoeuvre")
-      .def_property_readonly("duration", &python::Car::duration, "s, the scenario's manoeuvre")
-      .def_property_readonly("tick_seconds", &python::Car::tickSeconds, "s, the driver's input period")
-      .def_property_readonly("steps_per_tick", &python::Car::stepsPerTick)
-      .def_property_readonly("fidelity", &python::Car::fidelity, "the rung driving now: 0 linkage, 1 kinematic, 2 planar")
-      .def_property_readonly("has_course", [](const python::Car& c) { return c.simulation().course().has_value(); })
+      .def_property_readonly("time", &api::CarCore::time, "s, 0 at the start of the manoeuvre")
+      .def_property_readonly("duration", &api::CarCore::duration, "s, the scenario's manoeuvre")
+      .def_property_readonly("tick_seconds", &api::CarCore::tickSeconds, "s, the driver's input period")
+      .def_property_readonly("steps_per_tick", &api::CarCore::stepsPerTick)
+      .def_property_readonly("fidelity", &api::CarCore::fidelity, "the rung driving now: 0 linkage, 1 kinematic, 2 planar")
+      .def_property_readonly("has_course", [](const api::CarCore& c) { return c.simulation().course().has_value(); })
       .def("course_reference_y",
-           [](const python::Car& c, double x) { return course(c).referenceY(x); }, py::arg("x"),
+           [](const api::CarCore& c, double x) { return course(c).referenceY(x); }, py::arg("x"),
            "The ISO 3888 course's reference centre line y(x), m (ValueError without a course)")
-      .def("course_contains", [](const python::Car& c, double x, double y) { return course(c).contains(x, y); },
+      .def("course_contains", [](const api::CarCore& c, double x, double y) { return course(c).contains(x, y); },
            py::arg("x"), py::arg("y"), "Whether the point is inside the course's lanes")
-      .def_property_readonly("course_end_x", [](const python::Car& c) { return course(c).endX; })
-      .def_property_readonly("failed", &python::Car::failed)
-      .def_property_readonly("failure", &python::Car::failure);
+      .def_property_readonly("course_end_x", [](const api::CarCore& c) { return course(c).endX; })
+      .def_property_readonly("failed", &api::CarCore::failed)
+      .def_property_readonly("failure", &api::CarCore::failure);
 
   m.def("tick_many", &tickMany, py::arg("cars"), py::arg("actions") = py::none(),
         "Ticks every car once on worker threads (the interpreter's lock released): actions (N, 3) of steer, "

@@ -1,8 +1,10 @@
-// bdfcar's car as Python sees it (python/module.cpp binds it): a scenario's
-// simulation stepped tick by tick with a person's (an agent's) input or the
-// scenario's own driver, its state as bytes, its observation and telemetry
-// row as numbers. Plain C++ (no Python here), so that a vector of cars can
-// be stepped on worker threads with the interpreter's lock released.
+// The car behind the library's API (include/bdfcar/bdfcar.h wraps it; the
+// Python module binds it): a scenario's simulation stepped tick by tick
+// with a person's (an agent's) input or the scenario's own driver, its state
+// as bytes, its observation and telemetry row as numbers; and a whole
+// scenario run as `bdfcar run` runs it, its telemetry kept. Plain C++ on
+// the internal headers, so that Python can step many cars on worker threads
+// with the interpreter's lock released.
 #pragma once
 
 #include <memory>
@@ -10,11 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "scenario/run.h"
 #include "scenario/simulation.h"
 #include "scenario/telemetry_row.h"
 #include "scenario_overrides.h"
 
-namespace bdfcar::python {
+namespace bdfcar::api {
 
 // A step that failed (diverged, a state check): the car must be reset or
 // restored before it steps again.
@@ -23,21 +26,29 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The overrides of a scenario's settings (as `bdfcar run`'s options);
+// throws config::ConfigError for an unknown fidelity.
+app::ScenarioOverrides carOverrides(const std::optional<std::string>& vehicle, const std::optional<std::string>& fidelity,
+                                    std::optional<double> step, std::optional<double> duration,
+                                    const std::vector<std::string>& settings);
+// A driver's input, clamped to its ranges; throws std::invalid_argument for NaN or infinity.
+scenario::DriverInput driverInput(double steer, double throttle, double brake);
+
 // The compact observation (observationNames()): chassis pose, velocities,
 // accelerations and the steering input, SI units.
 constexpr int kObservationSize = 13;
 const std::vector<std::string>& observationNames();
 
-class Car {
+class CarCore {
  public:
   // Loads the scenario (with the overrides: vehicle, fidelity, step,
   // duration, --set settings), builds its world, settles the car.
   // sceneOf: joins that car's scene (its ground, built once) instead of
   // building one; the scenario must name the same ground.
-  Car(const std::string& scenarioPath, const app::ScenarioOverrides& overrides, const Car* sceneOf = nullptr);
+  CarCore(const std::string& scenarioPath, const app::ScenarioOverrides& overrides, const CarCore* sceneOf = nullptr);
   // Another car in the same world (terrain and vehicle built once, shared
   // read-only), settled the same way: the state of `other` at its start.
-  explicit Car(const Car& other);
+  explicit CarCore(const CarCore& other);
 
   // Back to the state after settling (the start of the manoeuvre).
   void reset();
@@ -84,4 +95,15 @@ class Car {
   std::string failure_;
 };
 
-}  // namespace bdfcar::python
+// A whole scenario with its own driver, as `bdfcar run` runs it: the
+// telemetry rows (columns x rows, row after row) and, with csvPath, the
+// command's file byte for byte. A failed run is a result; bad files throw.
+struct RunTelemetry {
+  std::vector<std::string> columns;
+  std::vector<double> rows;
+  scenario::RunResult result;
+};
+RunTelemetry runScenario(const std::string& scenarioPath, const app::ScenarioOverrides& overrides,
+                         const std::string& csvPath = "");
+
+}  // namespace bdfcar::api
