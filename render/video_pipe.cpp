@@ -3,9 +3,12 @@
 #include <sys/wait.h>
 
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "render/thread_priority.h"
+#include "scenario/row_file.h"
 
 namespace bdfcar::render {
 namespace {
@@ -19,8 +22,13 @@ std::string shellQuote(const std::string& s) {
 
 }  // namespace
 
+std::string VideoPipe::partialPath(const std::string& path) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
+}
+
 VideoPipe::VideoPipe(const std::string& path, int width, int height, const VideoOptions& options)
-    : path_(path), width_(width), height_(height) {
+    : path_(path), partial_(partialPath(path)), width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw RenderError("VideoPipe: bad frame size");
   const std::string probe = "command -v " + shellQuote(options.ffmpeg) + " >/dev/null 2>&1";
   if (std::system(probe.c_str()) != 0)
@@ -32,7 +40,7 @@ VideoPipe::VideoPipe(const std::string& path, int width, int height, const Video
                           std::to_string(height) + " -r " + std::to_string(options.fps) +
                           " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset " +
                           shellQuote(options.preset) + " -crf " + std::to_string(options.crf) + " -pix_fmt yuv420p " +
-                          shellQuote(path);
+                          shellQuote(partial_);
   // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   pipe_ = popen(cmd.c_str(), "w");
@@ -50,7 +58,8 @@ void VideoPipe::write(const Frame& frame) {
     throw RenderError("VideoPipe: frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
                       " differs from the video's " + std::to_string(width_) + "x" + std::to_string(height_));
   if (std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), pipe_) != frame.rgba.size())
-    throw RenderError("VideoPipe: ffmpeg stopped accepting frames for " + path_);
+    throw scenario::OutputError(path_ + ": cannot write the video: ffmpeg stopped taking frames (a full disk?); " +
+                                "what it wrote is in " + partial_ + ", an earlier " + path_ + " is kept");
   ++frames_;
 }
 
@@ -60,7 +69,11 @@ void VideoPipe::close() {
   const int status = pclose(pipe_);
   pipe_ = nullptr;
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw RenderError("VideoPipe: ffmpeg failed writing " + path_ + " (exit status " + std::to_string(status) + ")");
+    throw scenario::OutputError(path_ + ": cannot write the video: ffmpeg failed (exit status " +
+                                std::to_string(status) + "); what it wrote is in " + partial_ + ", an earlier " +
+                                path_ + " is kept");
+  if (std::rename(partial_.c_str(), path_.c_str()) != 0)
+    throw scenario::OutputError(path_ + ": cannot rename " + partial_ + " into place");
 }
 
 }  // namespace bdfcar::render

@@ -1,4 +1,8 @@
 // A video file from frames: raw RGBA frames piped into an ffmpeg process.
+// Written as NAME.partial.EXT beside the file and renamed onto it when
+// ffmpeg has finished, so an earlier video of that name is kept until the
+// new one is whole; a failure to write it (ffmpeg stopped, a full disk) is
+// scenario::OutputError (exit 5), the partial file left.
 #pragma once
 
 #include <cstdio>
@@ -27,14 +31,18 @@ class VideoPipe {
   VideoPipe(const VideoPipe&) = delete;
   VideoPipe& operator=(const VideoPipe&) = delete;
 
-  // Sends one frame (must have the size given at construction).
+  // Sends one frame (must have the size given at construction); throws
+  // scenario::OutputError when ffmpeg no longer takes them.
   void write(const Frame& frame);
-  // Ends the stream and waits for ffmpeg; throws if it failed.
+  // Ends the stream, waits for ffmpeg and renames the video into place;
+  // throws scenario::OutputError if ffmpeg failed.
   void close();
+  // NAME.partial.EXT for NAME.EXT: where the video is until close().
+  static std::string partialPath(const std::string& path);
   int frames() const { return frames_; }
 
  private:
-  std::string path_;
+  std::string path_, partial_;
   int width_, height_;
   int frames_ = 0;
   FILE* pipe_ = nullptr;

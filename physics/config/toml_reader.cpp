@@ -3,6 +3,10 @@
 #include "config/file_kind.h"
 
 #include <algorithm>
+#include <atomic>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,11 +24,26 @@ class TomlDocument {
 
 namespace {
 
+// Files whose long lines the reader split before parsing (splitLongLines):
+// for each, the line of the file each parsed line came from, so that
+// messages name the file's own lines. Loaders may run on several threads.
+std::mutex splitMutex;
+std::map<std::string, std::shared_ptr<const std::vector<int>>> splitLines;
+std::atomic<bool> anySplit{false};
+
+int originalLine(const std::string& file, int line) {
+  if (!anySplit.load(std::memory_order_relaxed)) return line;
+  std::lock_guard lock(splitMutex);
+  const auto it = splitLines.find(file);
+  if (it == splitLines.end() || line < 1 || static_cast<std::size_t>(line) > it->second->size()) return line;
+  return (*it->second)[static_cast<std::size_t>(line - 1)];
+}
+
 const toml::value& V(const void* p) { return *static_cast<const toml::value*>(p); }
 
 int lineOf(const toml::value& v) {
   const auto loc = v.location();
-  return static_cast<int>(loc.line());
+  return originalLine(loc.file_name(), static_cast<int>(loc.line()));
 }
 
 // Values parsed from a --set option carry its text as their file name.
@@ -483,10 +502,14 @@ std::vector<std::vector<double>> Table::grid(const std::string& key, std::size_t
 
 // Reports the unknown key written first, so the message points at the first typo.
 void Table::failFirstUnknown(const std::vector<std::string_view>& known, const std::string& suffix) const {
+  // Sorted, looked up by halving: a table of 100,000 keys (all known) took
+  // 10^10 comparisons by a linear search per key.
+  std::vector<std::string_view> sorted = known;
+  std::sort(sorted.begin(), sorted.end());
   const toml::value* first = nullptr;
   std::string firstKey;
   for (const auto& [k, v] : V(value_).as_table()) {
-    if (std::find(known.begin(), known.end(), k) != known.end()) continue;
+    if (std::binary_search(sorted.begin(), sorted.end(), std::string_view(k))) continue;
     const bool earlier = !first || lineOf(v) < lineOf(*first) || (lineOf(v) == lineOf(*first) && k < firstKey);
     if (earlier) first = &v, firstKey = k;
   }
@@ -572,6 +595,74 @@ void checkNesting(const std::string& text, const std::string& path) {
   }
 }
 
+// toml11 looks at the whole line of every value it parses (for comments,
+// even when they are discarded): a line of n values costs n^2 (100,000
+// numbers on one line took over 30 s). A line longer than kSplitLine is
+// broken after the commas of its arrays (a newline is whitespace there),
+// and the lines map recorded, so that the cost is linear and messages still
+// name the file's own lines. Refuses a file of more than kMaxValues values
+// (commas in arrays and '=' outside strings and comments), naming the limit.
+constexpr std::size_t kSplitLine = 512;
+constexpr std::size_t kMaxValues = std::size_t{1} << 21;  // 2,097,152
+
+std::string splitLongLines(const std::string& text, const std::string& path, std::vector<int>& lines) {
+  lines.clear();
+  std::size_t longest = 0, run = 0;
+  for (char c : text) {
+    run = c == '\n' ? 0 : run + 1;
+    longest = std::max(longest, run);
+  }
+  Scan s{text};
+  std::string out;
+  const bool split = longest > kSplitLine;
+  if (split) {
+    out.reserve(text.size() + text.size() / 16);
+    lines.push_back(1);
+  }
+  std::size_t lineLength = 0, values = 0;
+  std::vector<char> open;
+  auto copyTo = [&](std::size_t end) {  // the input up to `end`, lines mapped
+    while (s.i < end) {
+      const char c = text[s.i];
+      s.advance();
+      if (!split) continue;
+      out += c;
+      lineLength = c == '\n' ? 0 : lineLength + 1;
+      if (c == '\n') lines.push_back(s.line);
+    }
+  };
+  while (!s.done()) {
+    const char c = text[s.i];
+    const std::size_t start = s.i;
+    if (c == '#') {
+      std::size_t e = s.i;
+      while (e < text.size() && text[e] != '\n') ++e;
+      copyTo(e);
+    } else if (s.at("\"\"\"") || s.at("'''") || c == '"' || c == '\'') {
+      const std::string_view quote = s.at("\"\"\"") ? "\"\"\"" : s.at("'''") ? "'''" : c == '"' ? "\"" : "'";
+      Scan probe{text, s.i, s.line};
+      probe.skipString(quote);
+      copyTo(probe.i);
+    } else {
+      if (c == '[' || c == '{') open.push_back(c);
+      if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
+      const bool inArray = !open.empty() && open.back() == '[';
+      if ((c == ',' && inArray) || c == '=') ++values;
+      if (values > kMaxValues)
+        throw ConfigError(path + ":" + std::to_string(s.line) + ": more than " + std::to_string(kMaxValues) +
+                          " values in one file (the limit of a data file; split the data over several files or "
+                          "use a coarser table)");
+      copyTo(start + 1);
+      if (split && c == ',' && inArray && lineLength > kSplitLine) {
+        out += '\n';
+        lineLength = 0;
+        lines.push_back(s.line);
+      }
+    }
+  }
+  return split ? out : std::string();
+}
+
 // TOML is UTF-8; toml11 reads past the end of its buffer on some invalid
 // sequences inside strings (found by fuzzing: tests/data/bad/fuzz/), so
 // text that is not UTF-8 is refused here, at the line of the first bad byte.
@@ -602,8 +693,19 @@ void checkUtf8(const std::string& text, const std::string& path) {
 toml::value parseValue(const std::string& text, const std::string& path) {
   checkUtf8(text, path);
   checkNesting(text, path);
+  auto lines = std::make_shared<std::vector<int>>();
+  const std::string split = splitLongLines(text, path, *lines);
+  {
+    std::lock_guard lock(splitMutex);
+    if (split.empty()) {
+      splitLines.erase(path);
+    } else {
+      splitLines[path] = lines;
+      anySplit = true;
+    }
+  }
   try {
-    std::istringstream in(text);
+    std::istringstream in(split.empty() ? text : split);
     return toml::parse(in, path);
   } catch (const toml::exception& e) {
     const auto& loc = e.location();
@@ -612,7 +714,8 @@ toml::value parseValue(const std::string& text, const std::string& path) {
     if (msg.rfind("[error] ", 0) == 0) msg = msg.substr(8);
     const auto nl = msg.find('\n');
     if (nl != std::string::npos) msg = msg.substr(0, nl);
-    throw ConfigError(path + ":" + std::to_string(loc.line()) + ": TOML syntax error: " + msg);
+    throw ConfigError(path + ":" + std::to_string(originalLine(path, static_cast<int>(loc.line()))) +
+                      ": TOML syntax error: " + msg);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc, std::out_of_range from inside the parser
     throw ConfigError(path + ":0: TOML file could not be parsed (" + std::string(e.what()) + ")");
   }

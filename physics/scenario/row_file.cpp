@@ -2,6 +2,8 @@
 #include "config/input_files.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,11 +19,45 @@ constexpr std::size_t kBufferBytes = 1 << 16;
 
 RowFile::RowFile(const std::string& path, double flushInterval)
     : path_(path),
+      writing_(path),
       flushInterval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
           std::chrono::duration<double>(flushInterval))),
       lastFlush_(std::chrono::steady_clock::now()) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw OutputError(path + ": cannot open for writing: " + std::strerror(errno));
+  struct stat st {};
+  const bool special = ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+  if (special) {
+    if (S_ISDIR(st.st_mode)) throw OutputError(path + ": cannot open for writing: it is a folder");
+    // A device or a FIFO: written directly. O_NONBLOCK: a FIFO with no
+    // reader is refused now rather than blocking for ever (ENXIO).
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd_ < 0 && errno == ENXIO)
+      throw OutputError(path + ": cannot open for writing: a FIFO with no reader (start the reader first)");
+    if (fd_ < 0) throw OutputError(path + ": cannot open for writing: " + std::strerror(errno));
+    const int flags = ::fcntl(fd_, F_GETFL);
+    if (flags >= 0) ::fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK);  // then block as a file does
+  } else {
+    writing_ = partialPath(path);
+    renameAtClose_ = true;
+    // Opened without truncation: another writer's rows are not touched
+    // before the lock says whether there is one.
+    fd_ = ::open(writing_.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw OutputError(path + ": cannot open " + writing_ + " for writing: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int e = errno;
+      ::close(fd_);
+      fd_ = -1;
+      if (e == EWOULDBLOCK)
+        throw OutputError(path + ": another process is writing this output now (" + writing_ +
+                          " is locked); choose another file or wait for it to finish");
+      throw OutputError(path + ": cannot lock " + writing_ + ": " + std::strerror(e));
+    }
+    if (::ftruncate(fd_, 0) != 0) {
+      const int e = errno;
+      ::close(fd_);
+      fd_ = -1;
+      throw OutputError(path + ": cannot truncate " + writing_ + ": " + std::strerror(e));
+    }
+  }
   buffer_.reserve(kBufferBytes);
 }
 
@@ -34,11 +70,24 @@ RowFile::~RowFile() {
 }
 
 void RowFile::writeAll(const char* p, std::size_t n) {
+  const char* const begin = p;
   while (n > 0) {
     const ssize_t w = ::write(fd_, p, n);
     if (w < 0) {
       if (errno == EINTR) continue;
-      throw OutputError(path_ + ": cannot write: " + std::strerror(errno));
+      const int e = errno;
+      failed_ = true;
+      if (!renameAtClose_) throw OutputError(path_ + ": cannot write: " + std::strerror(e));
+      // Back to the last whole row written (this batch's rows are whole up
+      // to its last newline that reached the file); the earlier file of this
+      // name is kept.
+      const char* last = p;
+      while (last > begin && last[-1] != '\n') --last;
+      const bool cut = ::ftruncate(fd_, committed_ + (last - begin)) == 0;
+      throw OutputError(path_ + ": cannot write: " + std::strerror(e) + "; " +
+                        (cut ? "the whole rows written so far are in " + writing_
+                             : "the rows written so far are in " + writing_ + " (its last row may be cut)") +
+                        ", and an earlier " + path_ + " is kept");
     }
     p += w;
     n -= static_cast<std::size_t>(w);
@@ -50,6 +99,7 @@ void RowFile::append(const char* text, std::size_t size) {
   if (buffer_.size() + size > kBufferBytes) flush();
   if (size > kBufferBytes) {
     writeAll(text, size);
+    committed_ += static_cast<long long>(size);
   } else {
     buffer_.insert(buffer_.end(), text, text + size);
   }
@@ -65,13 +115,38 @@ void RowFile::flush() {
   rows.swap(buffer_);
   buffer_.reserve(kBufferBytes);
   writeAll(rows.data(), rows.size());
+  committed_ += static_cast<long long>(rows.size());
 }
 
 void RowFile::close() {
   if (fd_ < 0) return;
-  flush();
+  try {
+    if (!failed_) flush();
+  } catch (const OutputError&) {
+    ::close(fd_);
+    fd_ = -1;
+    throw;
+  }
   const int fd = fd_;
   fd_ = -1;
+  if (failed_) {  // the partial file stays; the write error was reported
+    ::close(fd);
+    return;
+  }
+  if (renameAtClose_) {
+    // On the disk before it replaces the earlier file (the lock held until then).
+    if (::fsync(fd) != 0) {
+      const int e = errno;
+      ::close(fd);
+      throw OutputError(path_ + ": cannot write: " + std::strerror(e) + "; the rows are in " + writing_ +
+                        ", and an earlier " + path_ + " is kept");
+    }
+    if (::rename(writing_.c_str(), path_.c_str()) != 0) {
+      const int e = errno;
+      ::close(fd);
+      throw OutputError(path_ + ": cannot rename " + writing_ + " into place: " + std::strerror(e));
+    }
+  }
   if (::close(fd) != 0) throw OutputError(path_ + ": cannot write: " + std::strerror(errno));
 }
 

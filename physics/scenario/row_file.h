@@ -1,10 +1,19 @@
 // A text file written by whole rows, so that nothing a user records is lost
-// or left half-written: rows are collected in memory and handed to the
-// operating system only whole (one write(2) of complete rows), at least every
-// flushInterval seconds and whenever the buffer fills, so a run killed at any
-// moment leaves a file that ends on a complete row with at most the last
-// second missing. A failed write (a full disk) throws OutputError naming the
-// file and the system's reason; close() flushes and reports the same way.
+// or left half-written, and nothing a user had is destroyed:
+//  - A regular file is written as PATH.partial beside it and renamed onto
+//    PATH when closed complete: until then an earlier PATH stays as it was.
+//    The partial file is locked (flock) while written, so a second writer of
+//    the same output is refused, never interleaved.
+//  - Rows are collected in memory and handed to the operating system only
+//    whole (one write(2) of complete rows), at least every flushInterval
+//    seconds and whenever the buffer fills, so a run killed outright leaves
+//    PATH.partial ending on a complete row (but for the rows being written at
+//    that instant) with at most the last second missing.
+//  - A failed write (a full disk) cuts PATH.partial back to its last whole
+//    row, leaves it there and the earlier PATH as it was, and throws
+//    OutputError naming both and the system's reason; close() the same.
+//  - A path that exists and is no regular file (a device, a FIFO) is written
+//    directly: there is nothing to rename.
 #pragma once
 
 #include <chrono>
@@ -23,9 +32,12 @@ class OutputError : public std::runtime_error {
 
 class RowFile {
  public:
-  // Creates (truncates) the file; throws OutputError when it cannot.
+  // Creates PATH.partial (or opens the device); throws OutputError when it
+  // cannot, or when another process is writing the same output.
   explicit RowFile(const std::string& path, double flushInterval = 1.0);
-  ~RowFile();  // flushes what is left; a failure there is lost, so call close()
+  // Flushes what is left and renames it into place (after a write error: leaves
+  // PATH.partial); a failure there is lost, so call close().
+  ~RowFile();
   RowFile(const RowFile&) = delete;
   RowFile& operator=(const RowFile&) = delete;
 
@@ -33,14 +45,21 @@ class RowFile {
   void append(const char* text, std::size_t size);
   void append(const std::string& text) { append(text.data(), text.size()); }
   void flush();
+  // Flushes, syncs and renames PATH.partial onto PATH.
   void close();
   const std::string& path() const { return path_; }
+  // Where the rows are until close(): PATH.partial (or PATH for a device).
+  const std::string& writingPath() const { return writing_; }
+  static std::string partialPath(const std::string& path) { return path + ".partial"; }
   long rows() const { return rows_; }
 
  private:
   void writeAll(const char* p, std::size_t n);
 
-  std::string path_;
+  std::string path_, writing_;
+  bool renameAtClose_ = false;
+  bool failed_ = false;       // a write failed: the partial file stays
+  long long committed_ = 0;   // bytes of whole rows written
   int fd_ = -1;
   std::vector<char> buffer_;
   std::chrono::steady_clock::duration flushInterval_;

@@ -1,8 +1,9 @@
 #!/bin/sh
 # A run stopped by SIGINT or SIGTERM ends cleanly (its summary, exit 128 +
 # signal) with telemetry that ends on a complete row, every row with the
-# header's number of columns. A run killed outright (SIGKILL) leaves every
-# row but the last whole: Linux cuts a write() that spans pages at a page
+# header's number of columns, renamed into place. A run killed outright
+# (SIGKILL) leaves its rows in OUT.partial (OUT itself not made), every row
+# but the last whole: Linux cuts a write() that spans pages at a page
 # boundary when a fatal signal arrives (generic_perform_write checks for one
 # before each page), so the rows the writer was flushing at that instant may
 # end mid-row, without a newline; the rows before them are whole. (Seen once
@@ -36,6 +37,12 @@ for sig in INT TERM KILL; do
     TERM) [ "$status" -eq 143 ] || { echo "check: SIGTERM gave exit $status, expected 143"; exit 1; } ;;
     KILL) [ "$status" -eq 137 ] || { echo "check: SIGKILL gave exit $status"; exit 1; } ;;
   esac
+  if [ "$sig" = KILL ]; then
+    [ ! -e "$out" ] || { echo "check: $out was made by a killed run"; exit 1; }
+    out=$out.partial
+  else
+    [ ! -e "$out.partial" ] || { echo "check: $out.partial left after a clean stop"; exit 1; }
+  fi
   complete_rows "$out" "$([ "$sig" = KILL ] && echo killed)"
   echo "$sig: exit $status, $(wc -l < "$out") complete rows"
 done
