@@ -178,7 +178,7 @@ TEST(VehicleFile, BadInputNamesFileLineKeyAndExpectation) {
   std::string e = loadError(replaced(base, "mass = 9.072", "mass = -9.072"));
   EXPECT_NE(e.find("test_bad_vehicle.toml:"), std::string::npos) << e;
   EXPECT_NE(e.find("mass"), std::string::npos) << e;
-  EXPECT_NE(e.find("expected a mass in (0, 1e+06) kg, got -9.072"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected a mass in [0.001, 1e+06) kg, got -9.072"), std::string::npos) << e;
   // Missing key.
   e = loadError(replaced(base, "design_height = 0.5128", ""));
   EXPECT_NE(e.find("missing key 'vehicle.design_height'"), std::string::npos) << e;

@@ -105,6 +105,13 @@ int Table::line(const std::string& key) const {
   return lineOf(V(value_));
 }
 
+std::string Table::sourceOf(const std::string& key) const {
+  const void* v = key.empty() ? nullptr : find(key);
+  std::string f = V(v ? v : value_).location().file_name();
+  if (f.empty() || f == "unknown file") f = doc_->path;
+  return f;
+}
+
 // "file:line: message", where the file is the one the value was written in
 // (an included file, or a --set option, which has no line).
 void Table::failAt(const void* value, const std::string& message) const {

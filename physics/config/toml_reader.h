@@ -115,6 +115,9 @@ class Table {
   // working directory for a command-line setting (empty).
   std::string folderOf(const std::string& key) const;
   int line(const std::string& key = "") const;
+  // The file the key's value (or this table) was written in: an included
+  // file's name where it came from one.
+  std::string sourceOf(const std::string& key = "") const;
 
   Table(std::shared_ptr<const TomlDocument> doc, const void* value, std::string context);
 

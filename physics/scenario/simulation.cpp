@@ -140,9 +140,17 @@ Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
   const Eigen::Matrix3d yaw = mb::rotZ(spec().startHeading);
   const Eigen::Vector3d start(spec().startX, spec().startY, 0.0);
-  auto groundAt = [&](const Eigen::Vector3d& p) {
+  auto groundAt = [&](const Eigen::Vector3d& p, int w) {
     const terrain::Hit g = world_->terrain->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
-    return g.hit ? g.point.z() : 0.0;
+    if (!g.hit) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "%s: no ground under wheel %s at the start (x = %.2f m, y = %.2f m): the start position "
+                    "([start] position, heading) puts the car off the terrain",
+                    spec().sourceFile.c_str(), vehicle::kCornerNames[w], p.x(), p.y());
+      throw PrepareError(text);
+    }
+    return g.point.z();
   };
   // Least-squares plane z = c0 + c1 x + c2 y through the ground under the wheels.
   Eigen::Matrix<double, 4, 3> A;
@@ -151,9 +159,23 @@ Simulation::StartPose Simulation::startPose() const {
     const mb::Vec3 centre = vehicle().spec.bodies[vehicle().layout.wheels[w].spindle].com;
     const Eigen::Vector3d p = start + yaw * Eigen::Vector3d(centre.x(), centre.y(), 0.0);
     A.row(w) << 1.0, p.x(), p.y();
-    b(w) = groundAt(p);
+    b(w) = groundAt(p, w);
   }
   const Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
+  // The car starts on the plane through the ground under its wheels: a wall
+  // or a step under it is no such plane.
+  const Eigen::Vector4d off = A * c - b;
+  int worst = 0;
+  off.cwiseAbs().maxCoeff(&worst);
+  if (std::abs(off(worst)) > kStartGroundStep) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "%s: the ground under wheel %s at the start is %.2f m %s the plane through the ground under the "
+                  "four wheels (at most %.2f m): the car would start against a wall or over a step; move the start",
+                  spec().sourceFile.c_str(), vehicle::kCornerNames[worst], std::abs(off(worst)),
+                  off(worst) > 0 ? "below" : "above", kStartGroundStep);
+    throw PrepareError(text);
+  }
   Eigen::Vector3d n(-c(1), -c(2), 1.0);
   n.normalize();
   const Eigen::Vector3d heading = yaw.col(0);
@@ -200,8 +222,10 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
     q(ch.qIndex + 6) = yaw.z();
   }
   std::string msg;
+  const integ::Vec design = q;
   if (!vehicle::assemble(vehicle(), *dae_, t0, q, msg))
     throw PrepareError(spec().vehicleFile + ": the vehicle cannot be assembled at the start: " + msg);
+  if (const auto far = vehicle::farFromDesign(vehicle(), design, q)) throw PrepareError(*far);
   integ::Vec lambda = integ::Vec::Zero(m.nc);
   vehicle::EquilibriumReport eq = vehicle::settleStatic(vehicle(), *dae_, *forces_, t0, q, lambda);
   if (!eq.converged)
@@ -285,6 +309,11 @@ integ::StepReport Simulation::step() {
       return r;
     }
   }
+  if (const std::optional<std::string> over = overturned()) {
+    r.status = integ::StepStatus::StateCheckFailed;
+    r.message.set("%s", over->c_str());
+    return r;
+  }
   if (const std::optional<std::string> under = belowGround()) {
     r.status = integ::StepStatus::StateCheckFailed;
     r.message.set("%s", under->c_str());
@@ -298,6 +327,21 @@ integ::StepReport Simulation::step() {
                   kMaxAirborne, com.x(), com.y(), com.z(), time());
   }
   return r;
+}
+
+std::optional<std::string> Simulation::overturned() const {
+  // The chassis' up axis pointing below the horizon: the car is on its
+  // roof or side past 90 deg (a planar model cannot roll over).
+  if (vehicle().planar) return std::nullopt;
+  const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
+  const double* qc = integrator_->current().q.data() + ch.qIndex;
+  const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).normalized().toRotationMatrix();
+  if (R(2, 2) >= 0) return std::nullopt;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "the car overturned at t = %.2f s (roll %.0f deg, pitch %.0f deg; x = %.1f m, y = %.1f m)",
+                time(), pm::atan2(R(2, 1), R(2, 2)) * 180 / M_PI, -pm::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180 / M_PI,
+                qc[0], qc[1]);
+  return std::string(buf);
 }
 
 std::optional<std::string> Simulation::belowGround() const {

@@ -288,6 +288,12 @@ class Simulation {
   // (FidelityPolicy::level's tolerances): a rough road's or a curb's height,
   // or a slope, needs a rung with heave, roll and pitch.
   std::optional<std::string> offLevelGround() const;
+  // The car on its roof or side (chassis up axis below the horizon): the run
+  // stops (a drive resets) saying so, never records a car rolling on.
+  std::optional<std::string> overturned() const;
+  // The start's ground under a wheel off the plane through the four by more
+  // than this: a wall or a step under the car.
+  static constexpr double kStartGroundStep = 0.25;  // m
   // A wheel centre or the chassis below the ground (any rung): the run stops
   // saying where, never records a car inside the ground.
   std::optional<std::string> belowGround() const;

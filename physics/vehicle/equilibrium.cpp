@@ -1,5 +1,8 @@
 #include "vehicle/equilibrium.h"
 
+#include <Eigen/Geometry>
+#include <cstdio>
+
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
@@ -90,6 +93,35 @@ bool assemble(const Vehicle& v, integ::Dae& dae, double t, Vec& q, std::string& 
   }
   message = "assembly did not converge: the hardpoints cannot close the loops";
   return false;
+}
+
+std::optional<std::string> farFromDesign(const Vehicle& v, const Vec& design, const Vec& assembled) {
+  const mb::Model& m = v.model;
+  mb::Data d0 = mb::makeData(m), d1 = mb::makeData(m);
+  mb::updatePositions(m, design, d0);
+  mb::updatePositions(m, assembled, d1);
+  const int ch = v.layout.chassis;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    // Relative to the chassis (the assembly holds it; a start pose moves both).
+    const Mat3 R0 = d0.R[ch].transpose() * d0.R[i], R1 = d1.R[ch].transpose() * d1.R[i];
+    const Vec3 p0 = d0.R[ch].transpose() * (d0.p[i] - d0.p[ch]), p1 = d1.R[ch].transpose() * (d1.p[i] - d1.p[ch]);
+    const double move = (p1 - p0).norm();
+    const double turn = Eigen::AngleAxisd(R0.transpose() * R1).angle();
+    if (move <= kMaxAssemblyMove && turn <= kMaxAssemblyTurn) continue;
+    const BodySpec* spec = nullptr;
+    for (const BodySpec& b : v.spec.bodies)
+      if (b.name == m.bodies[i].name) spec = &b;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s%s%d: closing the loops moved body '%s' %.1f mm and turned it %.1f deg from its design pose "
+                  "(at most %.0f mm and %.1f deg): its hardpoints do not close the loops as drawn (a link's end in "
+                  "the wrong place?)",
+                  spec ? spec->file.c_str() : v.spec.sourceFile.c_str(), ":", spec ? spec->line : 0,
+                  m.bodies[i].name.c_str(), move * 1e3, turn * 180 / M_PI, kMaxAssemblyMove * 1e3,
+                  kMaxAssemblyTurn * 180 / M_PI);
+    return std::string(text);
+  }
+  return std::nullopt;
 }
 
 EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces, double t, Vec& q,

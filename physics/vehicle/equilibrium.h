@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "integrator/dae.h"
@@ -30,6 +31,16 @@ struct EquilibriumReport {
 
 // Closes the loops moving every coordinate except the chassis and rack ones.
 bool assemble(const Vehicle& v, integ::Dae& dae, double t, integ::Vec& q, std::string& message);
+
+// Where an assembly from `design` (the vehicle's design positions, placed
+// anywhere) to `assembled` moved a body far from its design pose relative to
+// the chassis (more than kMaxAssemblyMove or kMaxAssemblyTurn): hardpoints
+// that do not close the loops as drawn (a tie rod's end in the wrong place
+// "assembles" with the wheels toed out 47 deg). Names the body, its file and
+// line, and how far; nullopt when every body stayed near its design pose.
+inline constexpr double kMaxAssemblyMove = 0.02;  // m
+inline constexpr double kMaxAssemblyTurn = 0.05;  // rad (2.9 deg)
+std::optional<std::string> farFromDesign(const Vehicle& v, const integ::Vec& design, const integ::Vec& assembled);
 
 // Static equilibrium at rest from q (assembled); updates q and lambda.
 EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces, double t,

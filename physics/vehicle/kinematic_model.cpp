@@ -49,7 +49,9 @@ class LinkageSweep {
     design_ = designPositions(v);
     std::string msg;
     mb::MultibodyDae dae(m_);
+    const Eigen::VectorXd drawn = design_;
     if (!assemble(v, dae, 0.0, design_, msg)) throw mb::ModelError("kinematic model: the linkage does not assemble: " + msg);
+    if (const auto far = farFromDesign(v, drawn, design_)) throw mb::ModelError(*far);
     mb::updatePositions(m_, design_, d_);
     for (int w = 0; w < 4; ++w) z0_[w] = wheelCentre(w).z();
   }

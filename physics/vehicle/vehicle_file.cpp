@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -21,7 +22,10 @@ namespace {
 
 // Physical ranges the loader enforces (docs/INPUT-CHECKS.md): wide enough for
 // any road vehicle, narrow enough to catch a slipped unit, sign or digit.
-const Range kMass{0.0, 1e6, true, true};                  // kg
+const Range kMass{1e-3, 1e6, false, true};                // kg
+const double kMaxGyration = 10.0;                          // m, radius of gyration of a body
+const double kMinLink = 1e-3;                              // m, between a link's or a spring's ends
+const double kMinPlacementMargin = 0.5;                    // m, see checkPlacement
 const Range kCoordinate{-100.0, 100.0, true, true};       // m, a point in the chassis frame
 const Range kDirection{-1e3, 1e3};                        // components of a direction vector
 const Range kInertiaEntry{-1e6, 1e6, true, true};         // kg m^2
@@ -86,6 +90,16 @@ class Loader {
   void readSteeringAndDriveline();
   void readAppearance();
   void readCertificate();
+  void checkPlacement();
+  // A point the vehicle places, where it was given (for checkPlacement).
+  struct Placed {
+    Table table;
+    std::string key;
+    Vec3 at;
+  };
+  void place(const Table& t, const std::string& key, const Vec3& at) { placed_.push_back({t, key, at}); }
+  // Refuses two ends closer than kMinLink (a link or spring of no length).
+  void requireApart(Table& t, const Vec3& a, const Vec3& b, const std::string& key, const char* what);
   tyre::TyreParams readTyre(Table t);
   tyre::FialaParams readFiala(Table& t);
 
@@ -94,7 +108,16 @@ class Loader {
   std::map<std::string, Vec3> points_;
   std::set<std::string> mirroredBodies_;   // base names
   std::set<std::string> bodies_;           // expanded names
+  std::vector<Placed> placed_;
 };
+
+void Loader::requireApart(Table& t, const Vec3& a, const Vec3& b, const std::string& key, const char* what) {
+  if ((a - b).norm() >= kMinLink) return;
+  char text[200];
+  std::snprintf(text, sizeof text, "the two ends of %s are %.3g mm apart: expected two distinct points (at least %g mm)",
+                what, (a - b).norm() * 1e3, kMinLink * 1e3);
+  t.fail(text, key);
+}
 
 Vec3 Loader::vectorValue(Table& t, const std::string& key, const std::string& text, const Side& s) {
   // "A->B": from point A to point B.
@@ -205,9 +228,11 @@ void Loader::readBodies() {
       BodySpec body;
       body.name = base + s.suffix;
       body.line = b.line();
+      body.file = b.sourceOf();
       if (bodies_.count(body.name)) b.fail("duplicate body name '" + body.name + "'", "name");
       body.mass = b.number("mass", Dimension::Mass, kMass);
       body.com = point(b, "com", s);
+      place(b, "com", body.com);
       // Inertia axes: the chassis axes (reflected on the right: M I M), or a
       // frame from two directions (computed from the mirrored points).
       Mat3 axes = s.M;
@@ -217,6 +242,7 @@ void Loader::readBodies() {
       for (Table& pm : b.optionalTables("point_masses")) {
         const double mi = pm.number("mass", Dimension::Mass, kMass);
         const Vec3 pi = point(pm, "at", s);
+        place(pm, "at", pi);
         pm.finish();
         const double M = body.mass + mi;
         const Vec3 com = (body.mass * body.com + mi * pi) / M;
@@ -224,6 +250,19 @@ void Loader::readBodies() {
         body.inertia += shift(body.mass, body.com - com) + shift(mi, pi - com);
         body.mass = M;
         body.com = com;
+      }
+      {
+        // 1e-300 kg with a car's inertia: a radius of gyration of 1e151 m.
+        const double gyration = std::sqrt(Eigen::SelfAdjointEigenSolver<Mat3>(body.inertia).eigenvalues().maxCoeff() /
+                                          body.mass);
+        if (!(gyration <= kMaxGyration)) {
+          char text[200];
+          std::snprintf(text, sizeof text,
+                        "a radius of gyration of %.3g m (inertia against the mass of %.3g kg): expected at most %g m; "
+                        "a mass or inertia in the wrong unit?",
+                        gyration, body.mass, kMaxGyration);
+          b.fail(text, "inertia");
+        }
       }
       Table j = b.table("joint");
       const std::string type = j.string("type");
@@ -234,6 +273,7 @@ void Loader::readBodies() {
       } else {
         js.parent = bodyRef(j, "parent", s);
         js.at = point(j, "at", s);
+        place(j, "at", js.at);
         if (type == "revolute" || type == "prismatic" || type == "cylindrical") {
           js.type = type == "revolute" ? mb::JointType::Revolute
                                        : (type == "prismatic" ? mb::JointType::Prismatic : mb::JointType::Cylindrical);
@@ -275,6 +315,7 @@ void Loader::readCutJoints() {
       CutJointSpec cut;
       cut.name = base + s.suffix;
       cut.line = c.line();
+      cut.file = c.sourceOf();
       if (!names.insert(cut.name).second) c.fail("duplicate cut joint name '" + cut.name + "'", "name");
       const std::string type = c.string("type");
       cut.bodyA = bodyRef(c, "body_a", s);
@@ -283,10 +324,14 @@ void Loader::readCutJoints() {
       if (type == "spherical") {
         cut.kind = CutKind::Spherical;
         cut.pointA = cut.pointB = point(c, "at", s);
+        place(c, "at", cut.pointA);
       } else if (type == "distance") {
         cut.kind = CutKind::Distance;
         cut.pointA = point(c, "at_a", s);
         cut.pointB = point(c, "at_b", s);
+        place(c, "at_a", cut.pointA);
+        place(c, "at_b", cut.pointB);
+        requireApart(c, cut.pointA, cut.pointB, "at_b", ("cut joint '" + cut.name + "'").c_str());
         cut.length = c.number("length", Dimension::Length, kPositiveLength, -1.0);  // -1: the design distance
       } else {
         c.fail("unknown cut joint type '" + type + "': expected spherical or distance", "type");
@@ -328,6 +373,9 @@ void Loader::readSprings() {
       sp.bodyB = bodyRef(t, "body_b", s);
       sp.pointA = point(t, "at_a", s);
       sp.pointB = point(t, "at_b", s);
+      place(t, "at_a", sp.pointA);
+      place(t, "at_b", sp.pointB);
+      requireApart(t, sp.pointA, sp.pointB, "at_b", ("spring '" + sp.name + "'").c_str());
       sp.freeLength = t.number("free_length", Dimension::Length, kFreeLength, 0.0);
       sp.preload = t.number("preload", Dimension::Force, kForce, 0.0);
       sp.spring = curve(t, "stiffness", "spring_curve", Dimension::Stiffness, kStiffness);
@@ -529,6 +577,34 @@ void Loader::readAppearance() {
   g.wheelWidth = tyre::width(w[0].tyre);
 }
 
+// Geometry that must be possible (docs/INPUT-CHECKS.md): every point the
+// vehicle places (bodies' centres of mass and joints, point masses, link
+// and spring ends) lies near the car, within half its size around the box
+// of its wheel centres (a slipped digit or unit puts a point metres away),
+// and is refused at its key and line otherwise.
+void Loader::checkPlacement() {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const WheelSpec& w : spec_.wheels)
+    for (const BodySpec& b : spec_.bodies)
+      if (b.name == w.spindle) {
+        lo = lo.cwiseMin(b.com);
+        hi = hi.cwiseMax(b.com);
+      }
+  if (!(lo.x() <= hi.x())) return;  // no wheels: reported elsewhere
+  const Vec3 span = hi - lo;
+  const double margin = std::max(kMinPlacementMargin, 0.5 * std::max(span.x(), span.y()));
+  for (Placed& p : placed_) {
+    const Vec3 outside = (lo - p.at).cwiseMax(p.at - hi).cwiseMax(Vec3::Zero());
+    if (outside.norm() <= margin) continue;
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "the point [%.3f, %.3f, %.3f] m is %.2f m from the box of the wheel centres (%.2f x %.2f m), "
+                  "farther than half the car's size (%.2f m): a slipped digit, sign or unit?",
+                  p.at.x(), p.at.y(), p.at.z(), outside.norm(), span.x(), span.y(), margin);
+    p.table.fail(text, p.key);
+  }
+}
+
 VehicleSpec Loader::load() {
   Table v = root_.table("vehicle");
   spec_.name = v.string("name");
@@ -544,6 +620,7 @@ VehicleSpec Loader::load() {
   readSteeringAndDriveline();
   readAppearance();
   readCertificate();
+  checkPlacement();
   root_.finish();
   return spec_;
 }

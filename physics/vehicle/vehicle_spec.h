@@ -35,6 +35,7 @@ struct BodySpec {
   Mat3 inertia = Mat3::Zero(); // about the COM, chassis axes at design
   JointSpec joint;
   int line = 0;                // line in the vehicle file (for error messages)
+  std::string file;            // the file it was written in (an included part's)
 };
 
 enum class CutKind { Spherical, Distance };
@@ -46,6 +47,7 @@ struct CutJointSpec {
   Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();  // at design, chassis frame
   double length = -1;          // distance; < 0 = the design distance of the points
   int line = 0;
+  std::string file;
 };
 
 struct SpringSpec {
