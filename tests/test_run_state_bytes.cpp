@@ -92,6 +92,27 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Every way the bytes can be wrong: the message says which, and the
 // simulation keeps its state.
+// The run state holds what carries from step to step, not the latest
+// evaluation's outputs: a run sampled at every tick (telemetry) and one
+// never sampled end in the same state, bit for bit, `auto`'s switches
+// included (its policy reads the accepted step's tyre forces, not whatever
+// a sample evaluated last).
+TEST(RunStateBytes, SamplingDoesNotChangeTheRun) {
+  const scenario::ScenarioSpec s = spec("scenarios/hard/curb_strike.toml", nullptr, true);
+  scenario::Simulation sampled(s), quiet(s);
+  sampled.prepare();
+  quiet.prepare();
+  for (int i = 0; i < 300; ++i) {
+    for (scenario::Simulation* sim : {&sampled, &quiet}) {
+      sim->beginTick(std::nullopt);
+      for (int k = 0; k < sim->stepsPerTick(); ++k) ASSERT_TRUE(sim->step().ok());
+    }
+    sampled.sample();
+  }
+  EXPECT_GT(sampled.fidelitySwitches(), 0);
+  EXPECT_EQ(scenario::hashRunState(sampled.save()), scenario::hashRunState(quiet.save()));
+}
+
 TEST(RunStateBytesErrors, RefusedWithWhatIsWrong) {
   scenario::Simulation sim(spec("scenarios/jturn.toml", "vehicles/sedan.toml"));
   sim.prepare();

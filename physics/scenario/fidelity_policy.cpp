@@ -83,13 +83,13 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
       saturated = true;
       continue;
     }
-    const tyre::TyreOutput& o = wheels[w].out;
-    if (!o.inContact) {  // a wheel off the ground: heave, roll and pitch matter
+    const vehicle::WheelContact& o = wheels[w];  // the accepted step's tyre
+    if (!o.acceptedInContact) {  // a wheel off the ground: heave, roll and pitch matter
       saturated = true;
       continue;
     }
     const double mu = tyre::peakFriction(tyres_[w], wheels[w].plane.friction);
-    saturated = saturated || pm::hypot(o.Fx, o.Fy) > kSaturation * mu * o.Fz;
+    saturated = saturated || pm::hypot(o.acceptedFx, o.acceptedFy) > kSaturation * mu * o.acceptedFz;
     lowestMu = std::min(lowestMu, mu);
   }
   constexpr double kG = 9.81;

@@ -109,20 +109,6 @@ void counters(IO& io, C& c) {
     io.field("integrator counters", *n);
 }
 
-template <class IO, class O>
-void tyreOutput(IO& io, O& o) {
-  flag(io, "tyre output in contact", o.inContact);
-  io.field("tyre output force", o.force);
-  io.field("tyre output point", o.point);
-  io.field("tyre output moment", o.moment);
-  io.field("tyre output contact point", o.contactPoint);
-  for (auto* x : {&o.Fx, &o.Fy, &o.Fz, &o.My, &o.Mz, &o.kappa, &o.tanAlpha, &o.deflection, &o.vx, &o.vsx, &o.vsy})
-    io.field("tyre output", *x);
-  io.field("tyre output slip kappa", o.slipState.kappa);
-  io.field("tyre output slip tan alpha", o.slipState.tanAlpha);
-  flag(io, "tyre output slip active", o.slipState.active);
-}
-
 template <class IO, class W>
 void wheel(IO& io, W& w) {
   flag(io, "contact plane valid", w.plane.valid);
@@ -134,9 +120,9 @@ void wheel(IO& io, W& w) {
   flag(io, "slip active", w.slip.active);
   for (auto* x : {&w.brakeDeflection, &w.driveTorque, &w.brakeCapacity})
     io.field("wheel brake and drive", *x);
-  tyreOutput(io, w.out);
-  for (auto* x : {&w.spinRate, &w.modelLoad, &w.cornerSpring, &w.cornerDamper}) io.field("wheel outputs", *x);
   io.field("wheel accepted force", w.acceptedForce);
+  flag(io, "wheel accepted in contact", w.acceptedInContact);
+  for (auto* x : {&w.acceptedFx, &w.acceptedFy, &w.acceptedFz}) io.field("wheel accepted tyre force", *x);
 }
 
 template <class IO, class S>

@@ -22,8 +22,10 @@
 
 namespace bdfcar::scenario {
 
-// 2: the model fingerprint (RunState::model) first.
-inline constexpr std::uint32_t kRunStateFormat = 2;
+// 2: the model fingerprint (RunState::model) first. 3: the latest
+// evaluation's tyre outputs left out (they are not state), the accepted
+// step's tyre force in.
+inline constexpr std::uint32_t kRunStateFormat = 3;
 
 class RunStateBytesError : public std::runtime_error {
  public:

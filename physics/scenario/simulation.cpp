@@ -245,7 +245,7 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   }
   for (int w = 0; w < 4; ++w) {
     const vehicle::WheelLayout& wl = vehicle().layout.wheels[w];
-    const double rolling = tyre::unloadedRadius(vehicle().wheel(w).tyre) - forces_->wheels()[w].out.deflection;
+    const double rolling = tyre::unloadedRadius(vehicle().wheel(w).tyre) - forces_->outputs()[w].out.deflection;
     v(wl.spinV) = wl.spinSign * spec().initialSpeed / rolling;
   }
   if (transmission_) {
@@ -360,7 +360,7 @@ std::optional<std::string> Simulation::belowGround() const {
     const Eigen::Vector3d& c = d.p[vehicle().layout.wheels[w].spindle];
     const vehicle::WheelContact& wc = forces_->wheels()[w];
     const bool sunk = wc.plane.valid ? (c - wc.plane.point).dot(wc.plane.normal) < 0 : groundAbove(c);
-    lifted = lifted || !wc.plane.valid || !wc.out.inContact;
+    lifted = lifted || !wc.plane.valid || !wc.acceptedInContact;
     if (!sunk) continue;
     std::snprintf(buf, sizeof buf,
                   "wheel %s's centre went below the ground at t = %.2f s (x = %.1f m, y = %.1f m, z = %.2f m, %s model)",

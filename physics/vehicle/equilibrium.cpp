@@ -197,7 +197,7 @@ EquilibriumReport settleStatic(const Vehicle& v, mb::MultibodyDae& dae, VehicleF
   rep.roll = pm::atan2(R(2, 1), R(2, 2));
   rep.pitch = -pm::asin(std::clamp(R(2, 0), -1.0, 1.0));
   for (int w = 0; w < 4; ++w) {
-    rep.wheelLoads[w] = forces.wheels()[w].out.Fz;
+    rep.wheelLoads[w] = forces.outputs()[w].out.Fz;
     rep.totalLoad += rep.wheelLoads[w];
   }
   rep.weight = weight;

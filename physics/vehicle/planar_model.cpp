@@ -40,7 +40,7 @@ Rest restOnLevelGround(const Vehicle& kin) {
   r.report = settleStatic(kin, dae, forces, 0.0, r.q, lambda);
   if (!r.report.converged)
     throw mb::ModelError("planar model: the kinematic model has no static equilibrium: " + r.report.message);
-  for (int w = 0; w < 4; ++w) r.tyres[w] = forces.wheels()[w].out;
+  for (int w = 0; w < 4; ++w) r.tyres[w] = forces.outputs()[w].out;
   return r;
 }
 

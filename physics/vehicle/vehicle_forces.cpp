@@ -22,6 +22,8 @@ void VehicleForces::reset(double t) {
     c.slip = tyre::SlipState{};
     c.brakeDeflection = 0;
     c.acceptedForce.setZero();
+    c.acceptedInContact = false;
+    c.acceptedFx = c.acceptedFy = c.acceptedFz = 0;
   }
   driveline_.clutchDeflection = 0;
   lastAccepted_ = t;
@@ -116,12 +118,12 @@ void VehicleForces::planarLoads(mb::Data& d) {
     const double z = up.dot(ps - pb);
     const double zd = up.dot(mb::pointVelocity(d, sprung, P.sprungPoint[w]) - mb::pointVelocity(d, base, P.basePoint[w]));
     cornerTravel_[w] = -P.suspensionShare[w] * z;
-    wheels_[w].cornerSpring = -P.rate[w] * z;
-    wheels_[w].cornerDamper = -P.damping[w] * zd;
-    const double f = wheels_[w].cornerSpring + wheels_[w].cornerDamper;  // + pushes the body up and the tyre down
+    outputs_[w].cornerSpring = -P.rate[w] * z;
+    outputs_[w].cornerDamper = -P.damping[w] * zd;
+    const double f = outputs_[w].cornerSpring + outputs_[w].cornerDamper;  // + pushes the body up and the tyre down
     mb::addWorldForce(d, sprung, ps, f * up);
     mb::addWorldForce(d, base, pb, -f * up);
-    wheels_[w].modelLoad = P.staticLoad[w] + f;
+    outputs_[w].modelLoad = P.staticLoad[w] + f;
   }
   // The roll centres: each axle's lateral tyre force at its roll-centre
   // height, the longitudinal ones at the axis height. The tyre forces are
@@ -136,11 +138,11 @@ void VehicleForces::planarLoads(mb::Data& d) {
   }
   for (int a = 0; a < 2; ++a) {
     const double shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
-    wheels_[2 * a].modelLoad -= shift;
-    wheels_[2 * a + 1].modelLoad += shift;
+    outputs_[2 * a].modelLoad -= shift;
+    outputs_[2 * a + 1].modelLoad += shift;
   }
   const double pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
-  for (int w = 0; w < 4; ++w) wheels_[w].modelLoad += w < 2 ? -pitch : pitch;
+  for (int w = 0; w < 4; ++w) outputs_[w].modelLoad += w < 2 ? -pitch : pitch;
 }
 
 void VehicleForces::planarWheelAttitude(const mb::Data& d, int w, tyre::WheelKinematics& k) const {
@@ -171,7 +173,7 @@ void VehicleForces::antiRollBars(mb::Data& d) {
       const Eigen::Vector3d& centre = d.p[spindle];
       mb::addWorldForce(d, spindle, centre, -sign * f * up);
       mb::addWorldForce(d, ch, centre, sign * f * up);
-      if (vehicle_.planar) wheels_[w].modelLoad += sign * f;  // the tyre carries what the bar puts on its corner
+      if (vehicle_.planar) outputs_[w].modelLoad += sign * f;  // the tyre carries what the bar puts on its corner
     }
   }
 }
@@ -191,9 +193,10 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
     if (vehicle_.planar) planarWheelAttitude(d, w, ks[w]);
     const tyre::WheelKinematics& k = ks[w];
     spins[w] = relativeSpin(d, w);
-    c.spinRate = k.spinRate;
-    c.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));
-    if (c.out.inContact) mb::addWorldWrench(d, wl.spindle, c.out.point, c.out.force, c.out.moment);
+    WheelOutput& o = outputs_[w];
+    o.spinRate = k.spinRate;
+    o.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));
+    if (o.out.inContact) mb::addWorldWrench(d, wl.spindle, o.out.point, o.out.force, o.out.moment);
     // Brakes react on the carrier (caliper on the upright): a joint torque.
     d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, spins[w], h);
     if (!vehicle_.spec.powertrain) applyDriveTorque(d, w, k);
@@ -280,11 +283,16 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
     const tyre::WheelKinematics k = wheelKinematics(d, w);
     // Transient slips matter only in the low-speed range (the last
     // evaluation's state says whether the wheel is in it).
-    if (c.out.slipState.active || !c.out.inContact)
+    const tyre::TyreOutput& out = outputs_[w].out;  // the step's last evaluation
+    if (out.slipState.active || !out.inContact)
       c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
     else
       c.slip.active = false;
-    c.acceptedForce = c.out.inContact ? c.out.force : Eigen::Vector3d::Zero();
+    c.acceptedForce = out.inContact ? out.force : Eigen::Vector3d::Zero();
+    c.acceptedInContact = out.inContact;
+    c.acceptedFx = out.Fx;
+    c.acceptedFy = out.Fy;
+    c.acceptedFz = out.Fz;
     // Ground under the wheel at the end of the next step.
     c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
     if (c.brakeCapacity > 0) {

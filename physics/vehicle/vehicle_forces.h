@@ -44,19 +44,29 @@ struct TerrainContactOptions {
   double footprintHalfLength = 0.6;  // of the unloaded radius, for the extra rays
 };
 
-// One wheel's force-law state and latest evaluation (plain data).
+// One wheel's force-law state (plain data, part of the run state): what
+// carries from step to step, and what the last accepted step produced.
 struct WheelContact {
   tyre::ContactPlane plane;
   tyre::SlipState slip;          // transient slips at the last accepted step
   double brakeDeflection = 0;    // rad, brake spring at the last accepted step
   double driveTorque = 0;        // N m about the spin axis (+ drives forward)
   double brakeCapacity = 0;      // N m available now
-  tyre::TyreOutput out;          // of the latest evaluation
-  double spinRate = 0;           // absolute, rad/s (latest evaluation)
-  double modelLoad = 0;          // N, a planar model's normal load (latest evaluation)
-  double cornerSpring = 0, cornerDamper = 0;  // N, a planar model's corner spring and damper at the wheel, + pushing the body up
-  Eigen::Vector3d acceptedForce = Eigen::Vector3d::Zero();  // N, world: the tyre force at the last accepted step
+  // The tyre at the last accepted step (what `auto`'s policy and a planar
+  // model's load transfer read).
+  Eigen::Vector3d acceptedForce = Eigen::Vector3d::Zero();  // N, world
+  bool acceptedInContact = false;
+  double acceptedFx = 0, acceptedFy = 0, acceptedFz = 0;     // N, contact frame
   bool operator==(const WheelContact&) const = default;
+};
+
+// One wheel's outputs of the latest evaluation (a residual, a sample): not
+// state, recomputed by every evaluation; read after one.
+struct WheelOutput {
+  tyre::TyreOutput out;
+  double spinRate = 0;           // absolute, rad/s
+  double modelLoad = 0;          // N, a planar model's normal load
+  double cornerSpring = 0, cornerDamper = 0;  // N, a planar model's corner spring and damper at the wheel, + pushing the body up
 };
 
 class VehicleForces final : public mb::ForceProvider {
@@ -76,12 +86,15 @@ class VehicleForces final : public mb::ForceProvider {
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
 
   const std::array<WheelContact, 4>& wheels() const { return wheels_; }
+  // The latest evaluation's outputs (after apply(): a residual or a sample).
+  const std::array<WheelOutput, 4>& outputs() const { return outputs_; }
   // Resets the per-step states (start of a run).
   void reset(double t);
 
   // What the force laws carry from step to step, as one value (part of the
   // run state): per wheel the contact plane, transient slips, brake spring,
-  // held inputs and latest outputs; the time of the last accepted step.
+  // held inputs and the accepted step's tyre force; the time of the last
+  // accepted step. The latest evaluation's outputs are not in it.
   struct State {
     std::array<WheelContact, 4> wheels;
     DrivelineState driveline;
@@ -109,7 +122,7 @@ class VehicleForces final : public mb::ForceProvider {
   double brakeTorque(const WheelContact& c, double relativeSpin, double h) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
-  // go on the sprung body and the base, the loads into wheels_[w].modelLoad.
+  // go on the sprung body and the base, the loads into outputs_[w].modelLoad.
   void planarLoads(mb::Data& data);
   // The anti-roll bars (AntiRollBarSpec): forces between each wheel centre
   // and the chassis; on a planar model also its tyres' loads.
@@ -123,7 +136,7 @@ class VehicleForces final : public mb::ForceProvider {
   void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
   void aerodynamics(mb::Data& data) const;
   std::optional<double> modelLoad(int w) const {
-    return vehicle_.planar ? std::optional<double>(wheels_[w].modelLoad) : std::nullopt;
+    return vehicle_.planar ? std::optional<double>(outputs_[w].modelLoad) : std::nullopt;
   }
 
   const Vehicle& vehicle_;
@@ -131,6 +144,7 @@ class VehicleForces final : public mb::ForceProvider {
   TerrainContactOptions options_;
   std::array<tyre::Tyre, 4> tyres_;
   std::array<WheelContact, 4> wheels_;
+  std::array<WheelOutput, 4> outputs_;
   DrivelineState driveline_;
   std::vector<int> driven_;  // the driven wheels
   double lastAccepted_ = 0;

@@ -53,13 +53,14 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   out.rack = v.layout.rackAxisSign * s.q(v.layout.rackQ);
   for (int w = 0; w < 4; ++w) {
     const WheelContact& wc = forces.wheels()[w];
-    out.Fz[w] = wc.out.Fz;
-    out.Fx[w] = wc.out.Fx;
-    out.Fy[w] = wc.out.Fy;
-    out.alpha[w] = wc.out.slipAngle();
-    out.kappa[w] = wc.out.kappa;
-    out.inContact[w] = wc.out.inContact;
-    out.spinRate[w] = wc.spinRate;
+    const WheelOutput& wo = forces.outputs()[w];
+    out.Fz[w] = wo.out.Fz;
+    out.Fx[w] = wo.out.Fx;
+    out.Fy[w] = wo.out.Fy;
+    out.alpha[w] = wo.out.slipAngle();
+    out.kappa[w] = wo.out.kappa;
+    out.inContact[w] = wo.out.inContact;
+    out.spinRate[w] = wo.spinRate;
     out.driveTorque[w] = wc.driveTorque;
     // Road-wheel steer: heading of the spin axis relative to the chassis, + = left.
     const Vec3 n = R.transpose() * d.R[v.layout.wheels[w].spindle].col(1);
@@ -69,11 +70,11 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
     const double outward = w % 2 == 0 ? 1.0 : -1.0;
     out.camber[w] = -outward * pm::asin(std::clamp(n.z(), -1.0, 1.0));
     out.toe[w] = -outward * out.steerAngle[w];
-    out.Mz[w] = wc.out.Mz;
+    out.Mz[w] = wo.out.Mz;
     out.travel[w] = suspensionTravel(v, d, w);
     if (v.planar) {
-      out.springForce[w] = wc.cornerSpring;
-      out.damperForce[w] = wc.cornerDamper;
+      out.springForce[w] = wo.cornerSpring;
+      out.damperForce[w] = wo.cornerDamper;
     }
   }
   for (size_t k = 0; k < m.springs.size(); ++k) {
@@ -105,9 +106,9 @@ VehicleView viewVehicle(const Vehicle& v, const mb::MultibodyDae& dae, const Veh
     wv.pose.rotation = Eigen::Quaterniond(d.R[b]);
     wv.radius = tyre::unloadedRadius(v.wheel(w).tyre);
     wv.width = tyre::width(v.wheel(w).tyre);
-    wv.contactPoint = forces.wheels()[w].out.contactPoint;
-    wv.normalForce = forces.wheels()[w].out.Fz;
-    wv.inContact = forces.wheels()[w].out.inContact;
+    wv.contactPoint = forces.outputs()[w].out.contactPoint;
+    wv.normalForce = forces.outputs()[w].out.Fz;
+    wv.inContact = forces.outputs()[w].out.inContact;
   }
   for (const LinkDrawing& l : v.layout.links) {
     LinkSegment s;
