@@ -9,12 +9,15 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
+#include "config/file_kind.h"
 #include "scenario/row_file.h"
 
 namespace bdfcar {
@@ -131,6 +134,28 @@ TEST(RowFile, AFifoWithoutAReaderIsRefusedAtOnce) {
   } catch (const scenario::OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("a FIFO with no reader"), std::string::npos) << e.what();
   }
+}
+
+// Inputs too: a FIFO is read when its writer sends (a pipe from <(...)), and
+// one nothing writes to is an error after config::kFifoWait, not a hang.
+TEST(DataFile, AFifoIsReadFromItsWriterAndASilentOneIsAnError) {
+  TempDir t;
+  const std::string fifo = (t.dir / "input.csv").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] {
+    std::ofstream out(fifo);
+    out << "t,steer\n0,0.1\n";
+  });
+  EXPECT_EQ(config::readDataFile(fifo, "steering input"), "t,steer\n0,0.1\n");
+  writer.join();
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    config::readDataFile(fifo, "steering input");
+    ADD_FAILURE() << "a FIFO nobody writes to was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a FIFO that nothing wrote to"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, config::kFifoWait + std::chrono::seconds(5));
 }
 
 }  // namespace

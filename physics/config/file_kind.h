@@ -4,6 +4,8 @@
 // program is given, so that "does not exist" means exactly that.
 #pragma once
 
+#include <chrono>
+
 #include <filesystem>
 #include <cstddef>
 #include <optional>
@@ -21,6 +23,8 @@ std::optional<std::string> notARegularFile(const std::filesystem::path& p);
 // kMaxDataFileBytes. Never a folder, a device (/dev/zero would never end)
 // or a socket.
 constexpr std::size_t kMaxDataFileBytes = 16u << 20;
+// How long a FIFO given as a data file may stay silent before it is an error.
+inline constexpr std::chrono::seconds kFifoWait{5};
 // The whole text; throws std::runtime_error "PATH:0: <what> ..." naming the
 // rule broken (missing, a device, larger than the cap).
 std::string readDataFile(const std::string& path, const std::string& what);
