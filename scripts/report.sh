@@ -59,7 +59,8 @@ bench_table() {
   bench_table bench_terrain
   echo
   echo "Loading TOML (\`build/tests/bench_toml\`): N numbers on one line, and as rows of 10, parsed and read;"
-  echo "the time grows linearly with N (the one-line shape was quadratic in toml11 before the reader split it):"
+  echo "the time grows linearly with N (the one-line shape was quadratic in toml11 before the reader split it);"
+  echo "items_per_second in thousands of values a second:"
   echo
   echo "| benchmark | real time (median) | counters |"
   echo "|---|---|---|"
