@@ -1,5 +1,7 @@
 #include "car_pool.h"
 
+#include <utility>
+
 namespace bdfcar::python {
 
 CarPool::CarPool(int threads) {
@@ -17,7 +19,14 @@ CarPool::~CarPool() {
 }
 
 void CarPool::drain() {
-  for (int i = next_.fetch_add(1); i < n_; i = next_.fetch_add(1)) (*job_)(i);
+  for (int i = next_.fetch_add(1); i < n_; i = next_.fetch_add(1)) {
+    try {
+      (*job_)(i);
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+    }
+  }
 }
 
 void CarPool::work() {
@@ -51,6 +60,7 @@ void CarPool::run(int n, const std::function<void(int)>& job) {
   std::unique_lock lock(mutex_);
   done_.wait(lock, [&] { return busy_ == 0; });
   job_ = nullptr;
+  if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }
 
 }  // namespace bdfcar::python

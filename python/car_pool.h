@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -24,6 +25,9 @@ class CarPool {
   CarPool(const CarPool&) = delete;
   CarPool& operator=(const CarPool&) = delete;
 
+  // An exception a job throws (on any thread) is rethrown here once every
+  // job has returned (the first one; the others are dropped): a worker
+  // thread never ends the process.
   void run(int n, const std::function<void(int)>& job);
   int threads() const { return static_cast<int>(workers_.size()) + 1; }
 
@@ -40,6 +44,7 @@ class CarPool {
   int busy_ = 0;          // workers not yet done with the current batch
   long generation_ = 0;   // batches started
   bool stop_ = false;
+  std::exception_ptr error_;  // the batch's first failure
 };
 
 }  // namespace bdfcar::python

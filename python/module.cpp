@@ -88,6 +88,7 @@ py::array_t<bool> tickMany(const py::list& cars, const std::optional<Array>& act
       try {
         list[i]->tick(actions ? std::optional(inputs[i]) : std::nullopt);
       } catch (const api::SimulationError&) {
+        // marked below; the car says why (failure)
       }
       f[i] = list[i]->failed();
     });
