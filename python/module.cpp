@@ -26,12 +26,7 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-app::ScenarioOverrides overrides(const std::optional<std::string>& vehicle, const std::optional<std::string>& fidelity,
-                                 std::optional<double> step, std::optional<double> duration,
-                                 const std::vector<std::string>& settings) {
-  return api::carOverrides(vehicle, fidelity, step, duration, settings);
-}
-
+using api::carOverrides;
 using api::driverInput;
 
 std::vector<api::CarCore*> carList(const py::list& cars) {
@@ -174,7 +169,7 @@ PYBIND11_MODULE(_bdfcar, m) {
                        std::optional<std::string> fidelity, std::optional<double> step,
                        std::optional<double> duration, std::vector<std::string> settings,
                        const api::CarCore* scene) {
-             const app::ScenarioOverrides ov = overrides(vehicle, fidelity, step, duration, settings);
+             const app::ScenarioOverrides ov = carOverrides(vehicle, fidelity, step, duration, settings);
              py::gil_scoped_release release;
              return std::make_unique<api::CarCore>(scenario, ov, scene);
            }),
@@ -263,7 +258,7 @@ PYBIND11_MODULE(_bdfcar, m) {
       [](const std::string& scenario, std::optional<std::string> out, std::optional<std::string> vehicle,
          std::optional<std::string> fidelity, std::optional<double> step, std::optional<double> duration,
          std::vector<std::string> settings) {
-        return runScenario(scenario, out, overrides(vehicle, fidelity, step, duration, settings));
+        return runScenario(scenario, out, carOverrides(vehicle, fidelity, step, duration, settings));
       },
       py::arg("scenario"), py::kw_only(), py::arg("out") = py::none(), py::arg("vehicle") = py::none(),
       py::arg("fidelity") = py::none(), py::arg("step") = py::none(), py::arg("duration") = py::none(),

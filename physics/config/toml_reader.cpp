@@ -24,7 +24,7 @@ class TomlDocument {
 
 namespace {
 
-// Files whose long lines the reader split before parsing (splitLongLines):
+// Files whose long lines the reader split before parsing (prescan):
 // for each, the line of the file each parsed line came from, so that
 // messages name the file's own lines. Loaders may run on several threads.
 std::mutex splitMutex;
@@ -579,40 +579,19 @@ struct Scan {
   }
 };
 
-// Refuses arrays / inline tables nested deeper than kMaxNesting, at the line
-// where the limit is passed. Brackets inside strings and comments do not count.
-void checkNesting(const std::string& text, const std::string& path) {
-  Scan s{text};
-  int depth = 0;
-  while (!s.done()) {
-    const char c = text[s.i];
-    if (c == '#') {
-      while (!s.done() && text[s.i] != '\n') s.advance();
-    } else if (s.at("\"\"\"") || s.at("'''")) {
-      s.skipString(s.at("\"\"\"") ? "\"\"\"" : "'''");
-    } else if (c == '"' || c == '\'') {
-      s.skipString(c == '"' ? "\"" : "'");
-    } else {
-      if ((c == '[' || c == '{') && ++depth > kMaxNesting)
-        throw ConfigError(path + ":" + std::to_string(s.line) + ": arrays or inline tables nested deeper than " +
-                          std::to_string(kMaxNesting) + " levels");
-      if ((c == ']' || c == '}') && depth > 0) --depth;
-      s.advance();
-    }
-  }
-}
-
 // toml11 looks at the whole line of every value it parses (for comments,
 // even when they are discarded): a line of n values costs n^2 (100,000
 // numbers on one line took over 30 s). A line longer than kSplitLine is
 // broken after the commas of its arrays (a newline is whitespace there),
 // and the lines map recorded, so that the cost is linear and messages still
 // name the file's own lines. Refuses a file of more than kMaxValues values
-// (commas in arrays and '=' outside strings and comments), naming the limit.
+// (commas in arrays and '=' outside strings and comments), and arrays or
+// inline tables nested deeper than kMaxNesting, naming the limit and line.
+// One scan for all three (brackets in strings and comments do not count).
 constexpr std::size_t kSplitLine = 512;
 constexpr std::size_t kMaxValues = std::size_t{1} << 21;  // 2,097,152
 
-std::string splitLongLines(const std::string& text, const std::string& path, std::vector<int>& lines) {
+std::string prescan(const std::string& text, const std::string& path, std::vector<int>& lines) {
   lines.clear();
   std::size_t longest = 0, run = 0;
   for (char c : text) {
@@ -651,6 +630,9 @@ std::string splitLongLines(const std::string& text, const std::string& path, std
       probe.skipString(quote);
       copyTo(probe.i);
     } else {
+      if ((c == '[' || c == '{') && static_cast<int>(open.size()) >= kMaxNesting)
+        throw ConfigError(path + ":" + std::to_string(s.line) + ": arrays or inline tables nested deeper than " +
+                          std::to_string(kMaxNesting) + " levels");
       if (c == '[' || c == '{') open.push_back(c);
       if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
       const bool inArray = !open.empty() && open.back() == '[';
@@ -699,9 +681,8 @@ void checkUtf8(const std::string& text, const std::string& path) {
 // The whole document, or a ConfigError naming the line where the syntax breaks.
 toml::value parseValue(const std::string& text, const std::string& path) {
   checkUtf8(text, path);
-  checkNesting(text, path);
   auto lines = std::make_shared<std::vector<int>>();
-  const std::string split = splitLongLines(text, path, *lines);
+  const std::string split = prescan(text, path, *lines);
   {
     std::lock_guard lock(splitMutex);
     if (split.empty()) {
@@ -840,7 +821,8 @@ toml::value settingValue(const Setting& s) {
   const std::string name = s.origin();
   try {
     checkUtf8(s.value, name);
-    checkNesting(s.value, name);
+    std::vector<int> lines;
+    prescan(s.value, name, lines);
     std::istringstream in("value = " + s.value + "\n");
     toml::value doc = toml::parse(in, name);
     return doc.as_table().at("value");

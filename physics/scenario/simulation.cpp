@@ -335,8 +335,11 @@ std::optional<std::string> Simulation::overturned() const {
   if (vehicle().planar) return std::nullopt;
   const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
   const double* qc = integrator_->current().q.data() + ch.qIndex;
-  const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).normalized().toRotationMatrix();
-  if (R(2, 2) >= 0) return std::nullopt;
+  // The z component of the chassis' z axis, from its quaternion (w, x, y, z):
+  // no rotation matrix on the step while the car is upright.
+  const double w = qc[3], x = qc[4], y = qc[5], z = qc[6];
+  if (w * w - x * x - y * y + z * z >= 0) return std::nullopt;
+  const Eigen::Matrix3d R = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
   char buf[200];
   std::snprintf(buf, sizeof buf, "the car overturned at t = %.2f s (roll %.0f deg, pitch %.0f deg; x = %.1f m, y = %.1f m)",
                 time(), pm::atan2(R(2, 1), R(2, 2)) * 180 / M_PI, -pm::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180 / M_PI,
