@@ -92,14 +92,23 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
 
 void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
   // Positions only are current here.
+  std::array<Eigen::Vector3d, 4> centres, axes;
   for (int w = 0; w < 4; ++w) {
     const int b = vehicle_.layout.wheels[w].spindle;
-    wheels_[w].plane = queryGround(d.p[b], d.R[b].col(1), tyres_[w].unloadedRadius());
+    centres[w] = d.p[b];
+    axes[w] = d.R[b].col(1);
   }
+  beginContacts(centres, axes);
+}
+
+void VehicleForces::beginContacts(const std::array<Eigen::Vector3d, 4>& centres,
+                                  const std::array<Eigen::Vector3d, 4>& spinAxes) {
+  for (int w = 0; w < 4; ++w) wheels_[w].plane = queryGround(centres[w], spinAxes[w], tyres_[w].unloadedRadius());
   planesReady_ = true;
 }
 
-double VehicleForces::brakeTorque(const WheelContact& c, double spin, double h) const {
+double VehicleForces::brakeTorque(int w, double spin, double h) const {
+  const WheelContact& c = wheels_[w];
   if (c.brakeCapacity <= 0) return 0.0;
   // Spring-damper on the spin since the wheel last slipped, saturated smoothly
   // at the available torque (a kink would make Newton cycle at the limit).
@@ -130,19 +139,26 @@ void VehicleForces::planarLoads(mb::Data& d) {
   // those of the last accepted step, advanced once per step as the brake
   // spring is: a step's lag on a fifth of the load transfer, where a second
   // tyre evaluation per residual would cost a fifth of the step (RESULTS 6b).
-  const Eigen::Vector3d fwd = d.R[base].col(0), left = d.R[base].col(1);
+  const std::array<double, 4> shift = planarLoadShift(d.R[base].col(0), d.R[base].col(1));
+  for (int w = 0; w < 4; ++w) outputs_[w].modelLoad += shift[w];
+}
+
+std::array<double, 4> VehicleForces::planarLoadShift(const Eigen::Vector3d& forward, const Eigen::Vector3d& left) const {
+  const PlanarLoads& P = *vehicle_.planar;
   double lateral[2] = {0, 0}, longitudinal = 0;
   for (int w = 0; w < 4; ++w) {
     lateral[w / 2] += left.dot(wheels_[w].acceptedForce);
-    longitudinal += fwd.dot(wheels_[w].acceptedForce);
+    longitudinal += forward.dot(wheels_[w].acceptedForce);
   }
+  std::array<double, 4> out{};
   for (int a = 0; a < 2; ++a) {
     const double shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
-    outputs_[2 * a].modelLoad -= shift;
-    outputs_[2 * a + 1].modelLoad += shift;
+    out[2 * a] = -shift;
+    out[2 * a + 1] = shift;
   }
   const double pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
-  for (int w = 0; w < 4; ++w) outputs_[w].modelLoad += w < 2 ? -pitch : pitch;
+  for (int w = 0; w < 4; ++w) out[w] += w < 2 ? -pitch : pitch;
+  return out;
 }
 
 void VehicleForces::planarWheelAttitude(const mb::Data& d, int w, tyre::WheelKinematics& k) const {
@@ -187,18 +203,15 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   std::array<tyre::WheelKinematics, 4> ks;
   std::array<double, 4> spins;
   for (int w = 0; w < 4; ++w) {
-    WheelContact& c = wheels_[w];
     const WheelLayout& wl = vehicle_.layout.wheels[w];
     ks[w] = wheelKinematics(d, w);
     if (vehicle_.planar) planarWheelAttitude(d, w, ks[w]);
     const tyre::WheelKinematics& k = ks[w];
     spins[w] = relativeSpin(d, w);
-    WheelOutput& o = outputs_[w];
-    o.spinRate = k.spinRate;
-    o.out = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w));
-    if (o.out.inContact) mb::addWorldWrench(d, wl.spindle, o.out.point, o.out.force, o.out.moment);
+    const tyre::TyreOutput& out = evaluateTyre(w, k, h, modelLoad(w));
+    if (out.inContact) mb::addWorldWrench(d, wl.spindle, out.point, out.force, out.moment);
     // Brakes react on the carrier (caliper on the upright): a joint torque.
-    d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(c, spins[w], h);
+    d.jointForce(wl.spinV) += wl.spinSign * brakeTorque(w, spins[w], h);
     if (!vehicle_.spec.powertrain) applyDriveTorque(d, w, k);
   }
   if (vehicle_.spec.powertrain) {
@@ -277,31 +290,8 @@ void VehicleForces::aerodynamics(mb::Data& d) const {
 }
 
 void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, double hNext) {
-  const double h = std::max(0.0, t - lastAccepted_);
-  for (int w = 0; w < 4; ++w) {
-    WheelContact& c = wheels_[w];
-    const tyre::WheelKinematics k = wheelKinematics(d, w);
-    // Transient slips matter only in the low-speed range (the last
-    // evaluation's state says whether the wheel is in it).
-    const tyre::TyreOutput& out = outputs_[w].out;  // the step's last evaluation
-    if (out.slipState.active || !out.inContact)
-      c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
-    else
-      c.slip.active = false;
-    c.acceptedForce = out.inContact ? out.force : Eigen::Vector3d::Zero();
-    c.acceptedInContact = out.inContact;
-    c.acceptedFx = out.Fx;
-    c.acceptedFy = out.Fy;
-    c.acceptedFz = out.Fz;
-    // Ground under the wheel at the end of the next step.
-    c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
-    if (c.brakeCapacity > 0) {
-      const double limit = c.brakeCapacity / kBrakeStiffness;
-      c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin(d, w), -limit, limit);
-    } else {
-      c.brakeDeflection = 0;
-    }
-  }
+  const double h = sinceAccepted(t);
+  for (int w = 0; w < 4; ++w) acceptWheel(w, wheelKinematics(d, w), relativeSpin(d, w), h, hNext);
   if (vehicle_.spec.powertrain) {
     DrivelineState& s = driveline_;
     std::array<double, 4> spins;
@@ -310,6 +300,43 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
                                                 : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
                                                                           s.clutchDeflection, engineSpeed(d) - s.command.ratio * drivenSpeed(spins), h);
   }
+  markAccepted(t);
+}
+
+const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKinematics& k, double h,
+                                                     std::optional<double> load) {
+  const WheelContact& c = wheels_[w];
+  WheelOutput& o = outputs_[w];
+  o.spinRate = k.spinRate;
+  o.out = tyres_[w].evaluate(k, c.plane, c.slip, h, load);
+  return o.out;
+}
+
+void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext) {
+  WheelContact& c = wheels_[w];
+  // Transient slips matter only in the low-speed range (the last
+  // evaluation's state says whether the wheel is in it).
+  const tyre::TyreOutput& out = outputs_[w].out;  // the step's last evaluation
+  if (out.slipState.active || !out.inContact)
+    c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
+  else
+    c.slip.active = false;
+  c.acceptedForce = out.inContact ? out.force : Eigen::Vector3d::Zero();
+  c.acceptedInContact = out.inContact;
+  c.acceptedFx = out.Fx;
+  c.acceptedFy = out.Fy;
+  c.acceptedFz = out.Fz;
+  // Ground under the wheel at the end of the next step.
+  c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
+  if (c.brakeCapacity > 0) {
+    const double limit = c.brakeCapacity / kBrakeStiffness;
+    c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin, -limit, limit);
+  } else {
+    c.brakeDeflection = 0;
+  }
+}
+
+void VehicleForces::markAccepted(double t) {
   lastAccepted_ = t;
   planesReady_ = true;
 }

@@ -29,7 +29,9 @@
 // is plain Coulomb friction.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <optional>
 
 #include "multibody/multibody_dae.h"
 #include "terrain/terrain.h"
@@ -85,6 +87,30 @@ class VehicleForces final : public mb::ForceProvider {
   void apply(const mb::Model& model, mb::Data& data, double t) override;
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
 
+  // The force laws of one wheel from its kinematics alone, for a model that
+  // is not an mb::Model (the closed-form planar car, planar_car.h); apply()
+  // and acceptStep() go through the same functions.
+  // The contact planes under wheel centres at the start of a run (what
+  // beginStep casts from a multibody model's positions).
+  void beginContacts(const std::array<Eigen::Vector3d, 4>& centres, const std::array<Eigen::Vector3d, 4>& spinAxes);
+  // The tyre at k on the wheel's contact plane (outputs()[w] holds it after).
+  const tyre::TyreOutput& evaluateTyre(int w, const tyre::WheelKinematics& k, double h, std::optional<double> load);
+  // The brake's torque about the spin axis (+ with the spin) at a spin
+  // relative to the carrier, h after the last accepted step.
+  double brakeTorque(int w, double relativeSpin, double h) const;
+  // Advances wheel w's states over an accepted step of length h (transient
+  // slips, brake spring, the accepted tyre force) and casts its next contact
+  // plane, hNext ahead; then markAccepted(t) once for the four.
+  void acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext);
+  void markAccepted(double t);
+  double sinceAccepted(double t) const { return std::max(0.0, t - lastAccepted_); }
+  // A planar model's load from its roll centres and pitch axis: the share of
+  // each wheel's load the accepted tyre forces move (the base's forward and
+  // left axes in the world).
+  std::array<double, 4> planarLoadShift(const Eigen::Vector3d& forward, const Eigen::Vector3d& left) const;
+  // A model's own outputs of wheel w (the closed-form planar car's loads and corner springs).
+  WheelOutput& output(int w) { return outputs_[w]; }
+
   const std::array<WheelContact, 4>& wheels() const { return wheels_; }
   // The latest evaluation's outputs (after apply(): a residual or a sample).
   const std::array<WheelOutput, 4>& outputs() const { return outputs_; }
@@ -119,7 +145,6 @@ class VehicleForces final : public mb::ForceProvider {
   std::array<double, 4> cornerTravel_{};  // m, a planar model's suspension travel from static (+ bump), per evaluation
   tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
-  double brakeTorque(const WheelContact& c, double relativeSpin, double h) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
   // go on the sprung body and the base, the loads into outputs_[w].modelLoad.

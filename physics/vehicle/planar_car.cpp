@@ -1,0 +1,487 @@
+#include "vehicle/planar_car.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "multibody/joint.h"
+#include "multibody/kinematics.h"
+#include "multibody/model_error.h"
+#include "portable_math.h"
+
+namespace bdfcar::vehicle {
+
+namespace {
+
+const Vec3 kX = Vec3::UnitX(), kY = Vec3::UnitY(), kZ = Vec3::UnitZ();
+
+[[noreturn]] void refuse(const std::string& what) { throw mb::ModelError("closed-form planar car: " + what); }
+
+// A body's rotational inertia with its rotor's (Body::rotorInertia), body axes.
+Mat3 fullInertia(const mb::Body& b) { return b.inertia + b.rotorInertia * b.rotorAxis * b.rotorAxis.transpose(); }
+
+// The base frame's yaw: base -> world and back.
+struct Heading {
+  double c = 1, s = 0;
+  Vec3 toWorld(const Vec3& x) const { return {c * x.x() - s * x.y(), s * x.x() + c * x.y(), x.z()}; }
+  Vec3 toBase(const Vec3& x) const { return {c * x.x() + s * x.y(), -s * x.x() + c * x.y(), x.z()}; }
+};
+
+Heading headingOf(double angle) {
+  const pm::SinCos r = pm::sincos(angle);
+  return {r.c, r.s};
+}
+
+// Rx(roll) Ry(pitch): the universal joint's rotation.
+Mat3 rollPitch(double roll, double pitch) {
+  const pm::SinCos f = pm::sincos(roll), t = pm::sincos(pitch);
+  Mat3 R;
+  R << t.c, 0, t.s,              //
+      f.s * t.s, f.c, -f.s * t.c,  //
+      -f.c * t.s, f.s, f.c * t.c;
+  return R;
+}
+
+}  // namespace
+
+PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, const TerrainContactOptions& options)
+    : vehicle_(planar), forces_(planar, terrain, options), steeringTime_(std::numeric_limits<double>::quiet_NaN()) {
+  if (!planar.planar) refuse("the vehicle is not a planar model");
+  if (planar.layout.engine >= 0) refuse("a powertrain's engine is not carried (the multibody planar model runs it)");
+  const mb::Model& m = planar.model;
+  const VehicleLayout& L = planar.layout;
+  const mb::Body& base = m.bodies[L.base];
+  const mb::Body& sprung = m.bodies[L.chassis];
+  if (base.joint != mb::JointType::Planar || base.parent != mb::kGround || !base.inChild.origin.isZero() ||
+      !base.inChild.axes.isIdentity() || !base.inParent.axes.isIdentity())
+    refuse("the base is not on a level planar joint");
+  if (sprung.joint != mb::JointType::Universal || sprung.parent != L.base || !sprung.inParent.axes.isIdentity())
+    refuse("the sprung body does not roll and pitch on the base");
+  groundZ_ = base.inParent.origin.z();
+  gravity_ = m.gravity;
+
+  // The sprung body about its joint: x_base = A + Rx Ry rest (x_body - o).
+  axisPoint_ = sprung.inParent.origin;
+  sprungRest_ = sprung.inChild.axes.transpose();
+  jointInBody_ = sprung.inChild.origin;
+  sprungMass_ = sprung.mass;
+  comArm0_ = sprungRest_ * (sprung.com - jointInBody_);
+  inertia0_ = sprungRest_ * fullInertia(sprung) * sprungRest_.transpose();
+
+  // Everything else rides on the base: the bodies fixed in it lumped into
+  // one, those the rack moves (the rack, the steered carriers and wheels)
+  // tabulated over the rack travel (below).
+  mb::Data d = mb::makeData(m);
+  const Eigen::VectorXd q0 = designPositions(planar);
+  mb::updatePositions(m, q0, d);
+  const Vec3 origin = d.p[L.base];
+  std::vector<int> steered;  // the bodies the rack moves
+  for (const mb::CutJoint& c : m.cutJoints) {
+    if (c.type != mb::CutJointType::Driver) refuse("cut joint '" + c.name + "' is not a rack driver");
+    const mb::Body& b = m.bodies[c.drivenBody];
+    drivenCoordinates_.emplace_back(b.qIndex + c.drivenCoordinate, b.vIndex + c.drivenCoordinate);
+  }
+  if (m.nv != kCoordinates + static_cast<int>(drivenCoordinates_.size()) || m.nq != m.nv)
+    refuse("the planar model has coordinates the closed form does not carry");
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    const mb::Body& b = m.bodies[i];
+    if (static_cast<int>(i) == L.chassis) continue;
+    if (b.parent == L.chassis) refuse("body '" + b.name + "' rides on the sprung body");
+    // Moved by the rack: its joint, or one below it, has a driven coordinate.
+    bool moves = false;
+    for (int k = static_cast<int>(i); k >= 0; k = m.bodies[k].parent)
+      for (const auto& driven : drivenCoordinates_)
+        moves = moves || (driven.second >= m.bodies[k].vIndex && driven.second < m.bodies[k].vIndex + m.bodies[k].nv);
+    if (moves) {
+      steered.push_back(static_cast<int>(i));
+      continue;
+    }
+    const Vec3 com = d.R[i] * b.com + d.p[i] - origin;
+    const Mat3 I = d.R[i] * fullInertia(b) * d.R[i].transpose();
+    fixedMoment_ += b.mass * com;
+    fixedYawInertia_ += I(2, 2) + b.mass * (com.x() * com.x() + com.y() * com.y());
+  }
+  for (const mb::Body& b : m.bodies) baseMass_ += b.mass;
+  baseMass_ -= sprung.mass;
+  baseMoment_ = fixedMoment_;
+  baseYawInertia_ = fixedYawInertia_;
+  if (!steered.empty()) {
+    // Over the rack travel: the moving bodies' first moment (x, y) and yaw
+    // inertia about the base origin, and their angular momentum about its z
+    // per rack rate (the steering's own inertia, felt when the rack moves).
+    const int carrier = L.wheels[0].carrier != L.base ? L.wheels[0].carrier : L.wheels[1].carrier;
+    if (carrier == L.base || m.bodies[carrier].table < 0) refuse("the steered wheels are not the front ones on rack tables");
+    const mb::GridAxis rack = m.tables[m.bodies[carrier].table].grid.axisX();
+    std::vector<std::vector<double>> samples(4, std::vector<double>(rack.nodes));
+    Eigen::VectorXd q = q0, rate = Eigen::VectorXd::Zero(m.nv);
+    for (const auto& driven : drivenCoordinates_) rate(driven.second) = 1.0;
+    for (int j = 0; j < rack.nodes; ++j) {
+      setRackTravel(planar, q, rack.start + j * rack.step);
+      mb::updatePositions(m, q, d);
+      mb::updateVelocities(m, q, rate, d);
+      double Sx = 0, Sy = 0, J = 0, H = 0;
+      for (int i : steered) {
+        const mb::Body& b = m.bodies[i];
+        const Vec3 com = d.R[i] * b.com + d.p[i] - origin;
+        const Vec3 w = d.R[i] * d.vel[i].tail<3>();
+        const Vec3 vc = d.R[i] * (d.vel[i].head<3>() + d.vel[i].tail<3>().cross(b.com));
+        const Mat3 I = d.R[i] * fullInertia(b) * d.R[i].transpose();
+        Sx += b.mass * com.x();
+        Sy += b.mass * com.y();
+        J += I(2, 2) + b.mass * (com.x() * com.x() + com.y() * com.y());
+        H += b.mass * (com.x() * vc.y() - com.y() * vc.x()) + I.row(2).dot(w);
+      }
+      samples[0][j] = Sx;
+      samples[1][j] = Sy;
+      samples[2][j] = J;
+      samples[3][j] = H;
+    }
+    steering_ = mb::SplineGrid(rack, mb::GridAxis{0, 1, 1}, samples);
+    steered_ = true;
+  }
+  mb::updatePositions(m, q0, d);
+
+  for (int w = 0; w < 4; ++w) {
+    const int sp = L.wheels[w].spindle;
+    const mb::Body& b = m.bodies[sp];
+    const std::string name = std::string("wheel ") + kCornerNames[w];
+    if (b.joint != mb::JointType::Revolute) refuse(name + " does not spin on a revolute joint");
+    const Vec3 axis = b.inChild.axes.col(2);  // the spin joint's axis, wheel frame
+    const Mat3 I = fullInertia(b);
+    Wheel& W = wheels_[w];
+    W.spinInertia = axis.dot(I * axis);
+    const double scale = std::max(1.0, I.norm());
+    auto offAxis = [&](const Vec3& x) { return (x - x.dot(axis) * axis).norm(); };
+    if ((I * axis - W.spinInertia * axis).norm() > 1e-9 * scale || offAxis(b.com) > 1e-9 ||
+        offAxis(b.inChild.origin) > 1e-9 || std::abs(std::abs(axis.y()) - 1.0) > 1e-9)
+      refuse(name + " is not symmetric about its spin axis (its y axis)");
+    W.spinSign = axis.y() > 0 ? 1.0 : -1.0;
+    W.multibodyQ = b.qIndex;
+    W.multibodyV = b.vIndex;
+    W.centre = d.p[sp] - origin;
+    W.axisY = d.R[sp].col(1);
+    const int carrier = L.wheels[w].carrier;
+    if (carrier == L.base) continue;
+    const mb::Body& c = m.bodies[carrier];
+    if (c.joint != mb::JointType::Tabulated1 || c.parent != L.base) refuse(name + "'s carrier is not a table of the rack on the base");
+    // The wheel's centre and axis over the rack travel, on the carrier table's nodes.
+    const mb::GridAxis rack = m.tables[c.table].grid.axisX();
+    // And the carrier's rotation about the wheel's axis per rack travel: the
+    // steering's share of the wheel's absolute spin rate (what the tyre reads).
+    std::vector<std::vector<double>> samples(7, std::vector<double>(rack.nodes));
+    Eigen::VectorXd q = q0;
+    for (int j = 0; j < rack.nodes; ++j) {
+      setRackTravel(planar, q, rack.start + j * rack.step);
+      mb::updatePositions(m, q, d);
+      const Vec3 centre = d.p[sp] - origin, y = d.R[sp].col(1);
+      for (int k = 0; k < 3; ++k) {
+        samples[k][j] = centre(k);
+        samples[3 + k][j] = y(k);
+      }
+      samples[6][j] = (d.R[carrier] * d.S.col(c.vIndex).tail<3>()).dot(y);
+    }
+    W.table = static_cast<int>(tables_.size());
+    tables_.emplace_back(rack, mb::GridAxis{0, 1, 1}, samples);
+  }
+}
+
+void PlanarCar::updateSteering(double t) {
+  if (t == steeringTime_) return;
+  rackNow_ = rack_ ? rack_->at(t) : mb::SignalValue{};
+  const double c = rackNow_.value, cd = rackNow_.rate, cdd = rackNow_.accel;
+  mb::SplineGrid::Sample s;
+  if (steered_) {
+    // The moving bodies' inertia at the rack travel, and what their motion
+    // relative to the base asks of it: d2/dt2 of their first moment (plus
+    // the Coriolis share, per yaw rate), d/dt of their angular momentum.
+    steering_.eval(c, 0.0, s);
+    baseMoment_ = fixedMoment_ + Vec3(s.f[0], s.f[1], 0);
+    baseYawInertia_ = fixedYawInertia_ + s.f[2];
+    for (int k = 0; k < 2; ++k) {
+      steeringForce_(k) = s.hess[k][0] * cd * cd + s.grad[k][0] * cdd;
+      steeringCoriolis_(k) = 2 * cd * s.grad[k][0];
+    }
+    steeringYaw_ = s.grad[3][0] * cd * cd + s.f[3] * cdd;
+    steeringYawCoriolis_ = s.grad[2][0] * cd;
+  }
+  for (Wheel& W : wheels_) {
+    if (W.table < 0) continue;
+    tables_[W.table].eval(c, 0.0, s);
+    W.centre = Vec3(s.f[0], s.f[1], s.f[2]);
+    W.centreRate = cd * Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
+    W.axisY = Vec3(s.f[3], s.f[4], s.f[5]).normalized();
+    W.steeringSpin = cd * s.f[6];
+    // The absolute spin's rate of change from the steering (its share above,
+    // and the tilt of the axis under the yaw rate), and the tilt's rate.
+    W.steeringSpinRate = cdd * s.f[6] + cd * cd * s.grad[6][0];
+    W.tiltRate = cd * s.grad[5][0];
+  }
+  steeringTime_ = t;
+}
+
+void PlanarCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
+  mb::jointRetract(mb::JointType::Planar, q.data(), dq.data(), out.data());
+  out.tail<6>() = q.tail<6>() + dq.tail<6>();
+}
+
+void PlanarCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
+  mb::jointLocal(mb::JointType::Planar, base.data(), q.data(), out.data());
+  out.tail<6>() = q.tail<6>() - base.tail<6>();
+}
+
+void PlanarCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
+  mb::jointLocalRate(mb::JointType::Planar, delta.data(), v.data(), out.data());
+  out.tail<6>() = v.tail<6>();
+}
+
+void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
+  steeringTime_ = std::numeric_limits<double>::quiet_NaN();  // the rack's segment may have changed at a tick
+  if (!forces_.needsBeginStep()) return;
+  updateSteering(t);
+  const Heading yaw = headingOf(q(Yaw));
+  const Vec3 origin(q(X), q(Y), groundZ_);
+  std::array<Vec3, 4> centres, axes;
+  for (int w = 0; w < 4; ++w) {
+    centres[w] = origin + yaw.toWorld(wheels_[w].centre);
+    axes[w] = yaw.toWorld(wheels_[w].axisY);
+  }
+  forces_.beginContacts(centres, axes);
+}
+
+integ::EvalStatus PlanarCar::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
+                                        integ::Message& msg) {
+  if (!q.allFinite() || !v.allFinite()) {
+    msg.set("non-finite state at t = %.6g s", t);
+    return integ::EvalStatus::Fatal;
+  }
+  for (int i = 0; i < kCoordinates; ++i)
+    if (std::abs(v(i)) > limits_.maxVelocity) {
+      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
+      return integ::EvalStatus::Fatal;
+    }
+  const double since = forces_.sinceAccepted(t);
+  for (int w = 0; w < 4; ++w) forces_.acceptWheel(w, kinematics_[w], relativeSpin_[w], since, h);
+  forces_.markAccepted(t);
+  steeringTime_ = std::numeric_limits<double>::quiet_NaN();
+  return integ::EvalStatus::Ok;
+}
+
+// The equations of motion by virtual power (Kane's form), in the base frame:
+// F = sum over bodies of (partial velocity) . (inertial force - applied force)
+// for the sprung body (the only one whose motion relative to the base is a
+// state) and the lumped base, plus each wheel's spin about its axis.
+integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                                      const integ::Vec&, integ::Residual& out, bool, integ::Message& msg) {
+  updateSteering(t);
+  const double h = forces_.sinceAccepted(t);
+  const PlanarLoads& PL = *vehicle_.planar;
+  const VehicleSpec& spec = vehicle_.spec;
+  const Heading yaw = headingOf(q(Yaw));
+  const Mat3 RJ = rollPitch(q(Roll), q(Pitch));
+  const Mat3 Rs = RJ * sprungRest_;  // the sprung body's axes in the base frame
+  const Vec3 e = RJ.col(1);          // the pitch axis
+  const double u = v(0), vs = v(1), r = v(2), rollRate = v(3), pitchRate = v(4);
+  const Vec3 rho = RJ * comArm0_, P = axisPoint_ + rho;
+  const Vec3 omegaRel = rollRate * kX + pitchRate * e, omega = r * kZ + omegaRel;
+  const Vec3 g = yaw.toBase(gravity_);
+  auto sprungPoint = [&](const Vec3& body) -> Vec3 { return axisPoint_ + Rs * (body - jointInBody_); };
+
+  // Applied forces: on the sprung body as a wrench about its centre of mass,
+  // on the lumped base (wheels' centres included) as a force and a yaw
+  // moment about the base origin, on each spin coordinate.
+  Vec3 fs = sprungMass_ * g, ts = Vec3::Zero();
+  Vec3 fb = baseMass_ * g;
+  double tb = 0;
+  std::array<double, 4> Qspin{};
+  auto onSprung = [&](const Vec3& x, const Vec3& f) {
+    fs += f;
+    ts += (x - P).cross(f);
+  };
+  auto onBase = [&](const Vec3& x, const Vec3& f) {
+    fb += f;
+    tb += x.x() * f.y() - x.y() * f.x();
+  };
+
+  // Corner springs between the rolled and pitched body and the base (their
+  // reaction on the base is vertical: no work in the plane).
+  std::array<double, 4> load, travel;
+  for (int w = 0; w < 4; ++w) {
+    const Vec3 ps = sprungPoint(PL.sprungPoint[w]);
+    const double z = ps.z() - PL.basePoint[w].z();
+    const double zd = omegaRel.cross(ps - axisPoint_).z();
+    travel[w] = -PL.suspensionShare[w] * z;
+    WheelOutput& o = forces_.output(w);
+    o.cornerSpring = -PL.rate[w] * z;
+    o.cornerDamper = -PL.damping[w] * zd;
+    const double f = o.cornerSpring + o.cornerDamper;
+    onSprung(ps, f * kZ);
+    load[w] = PL.staticLoad[w] + f;
+  }
+  const std::array<double, 4> shift = forces_.planarLoadShift(Vec3(yaw.c, yaw.s, 0), Vec3(-yaw.s, yaw.c, 0));
+  for (int w = 0; w < 4; ++w) load[w] += shift[w];
+  if (!spec.antiRollBars.empty()) {
+    const Vec3 up = Rs.col(2);
+    auto centreTravel = [&](int w) {
+      return (Rs.transpose() * (wheels_[w].centre - axisPoint_) + jointInBody_).z() - vehicle_.layout.wheelCentreAtDesign[w].z();
+    };
+    for (const AntiRollBarSpec& bar : spec.antiRollBars) {
+      const double f = PL.barRate[bar.left / 2] * (centreTravel(bar.left) - centreTravel(bar.right));
+      for (const auto& [w, sign] : {std::pair{bar.left, 1.0}, std::pair{bar.right, -1.0}}) {
+        onBase(wheels_[w].centre, -sign * f * up);
+        onSprung(wheels_[w].centre, sign * f * up);
+        load[w] += sign * f;
+      }
+    }
+  }
+
+  // The wheels: tyres on their contact planes, brakes, drive torques.
+  const Vec3 origin(q(X), q(Y), groundZ_);
+  for (int w = 0; w < 4; ++w) {
+    const Wheel& W = wheels_[w];
+    Vec3 axis = RJ * W.axisY;  // the tyre sees the body's roll and pitch and the carrier's turn over its travel
+    axis += (Rs * (travel[w] * PL.turnPerTravel[w])).cross(axis);
+    axis.normalize();
+    tyre::WheelKinematics& k = kinematics_[w];
+    k.centre = origin + yaw.toWorld(W.centre);
+    k.spinAxis = yaw.toWorld(axis);
+    k.centreVelocity = yaw.toWorld(Vec3(u - r * W.centre.y(), vs + r * W.centre.x(), 0) + W.centreRate);
+    const double jointRate = v(Spin + w);
+    k.spinRate = r * W.axisY.z() + W.steeringSpin + W.spinSign * jointRate;  // about the wheel's y
+    relativeSpin_[w] = W.spinSign * jointRate;
+    forces_.output(w).modelLoad = load[w];
+    const tyre::TyreOutput& tyre = forces_.evaluateTyre(w, k, h, load[w]);
+    const Vec3 spinAxis = W.spinSign * W.axisY;  // the spin joint's
+    if (tyre.inContact) {
+      const Vec3 F = yaw.toBase(tyre.force), M = yaw.toBase(tyre.moment), at = yaw.toBase(tyre.point - origin);
+      onBase(at, F);
+      tb += M.z();
+      Qspin[w] += spinAxis.dot((at - W.centre).cross(F) + M);
+    }
+    Qspin[w] += W.spinSign * forces_.brakeTorque(w, relativeSpin_[w], h);
+    const double drive = forces_.wheels()[w].driveTorque;
+    if (drive == 0.0) continue;
+    if (spec.driveReaction == DriveReaction::Carrier) {
+      Qspin[w] += W.spinSign * drive;
+      continue;
+    }
+    const Vec3 torque = drive * axis;
+    tb += torque.z();
+    Qspin[w] += spinAxis.dot(torque);
+    if (spec.driveReaction == DriveReaction::Chassis) ts -= torque;
+  }
+
+  // Air: drag at the sprung body's centre of mass, lift above the axles.
+  const Vec3 vc = u * kX + vs * kY + r * kZ.cross(P) + omegaRel.cross(rho);
+  if (spec.dragArea > 0) onSprung(P, -spec.dragArea * vc.norm() * vc);
+  if (spec.liftAreaFront != 0 || spec.liftAreaRear != 0) {
+    const double air = Rs.col(0).dot(vc);
+    const Vec3& com = vehicle_.model.bodies[vehicle_.layout.chassis].com;
+    for (int axle = 0; axle < 2; ++axle) {
+      const Vec3 centre = 0.5 * (vehicle_.layout.wheelCentreAtDesign[2 * axle] + vehicle_.layout.wheelCentreAtDesign[2 * axle + 1]);
+      const double area = axle == 0 ? spec.liftAreaFront : spec.liftAreaRear;
+      onSprung(sprungPoint(Vec3(centre.x(), com.y(), com.z())), area * air * air * Rs.col(2));
+    }
+  }
+
+  // Inertial forces. The sprung body: partial velocities of its centre of
+  // mass and partial angular velocities for (forward, sideways, yaw rate,
+  // roll rate, pitch rate); accelerations = partials . a + velocity terms.
+  const std::array<Vec3, 5> Jv{kX, kY, kZ.cross(P), kX.cross(rho), e.cross(rho)};
+  const std::array<Vec3, 5> Jw{Vec3::Zero(), Vec3::Zero(), kZ, kX, e};
+  const Vec3 xe = kX.cross(e);
+  Vec3 ac = omega.cross(omegaRel.cross(rho)) + (rollRate * pitchRate) * xe.cross(rho) + r * kZ.cross(vc);
+  Vec3 alpha = (rollRate * pitchRate) * xe + r * kZ.cross(omegaRel);
+  for (int j = 0; j < 5; ++j) {
+    ac += a(j) * Jv[j];
+    alpha += a(j) * Jw[j];
+  }
+  const Mat3 I = RJ * inertia0_ * RJ.transpose();
+  const Vec3 fin = sprungMass_ * ac - fs;
+  const Vec3 tin = I * alpha + omega.cross(I * omega) - ts;
+  for (int j = 0; j < 5; ++j) out.F(j) = Jv[j].dot(fin) + Jw[j].dot(tin);
+  // The lumped base: its centre of mass accelerates with the base frame.
+  const double Ax = a(0) - r * vs, Ay = a(1) + r * u, Sx = baseMoment_.x(), Sy = baseMoment_.y();
+  out.F(0) += baseMass_ * Ax - a(2) * Sy - r * r * Sx - fb.x() + steeringForce_.x() - r * steeringCoriolis_.y();
+  out.F(1) += baseMass_ * Ay + a(2) * Sx - r * r * Sy - fb.y() + steeringForce_.y() + r * steeringCoriolis_.x();
+  out.F(2) += Sx * Ay - Sy * Ax + baseYawInertia_ * a(2) - tb + steeringYaw_ + r * steeringYawCoriolis_;
+  // The spins: the absolute spin about the wheel's axis (Euler's equation of
+  // a wheel symmetric about it), coupled to the yaw and the steering.
+  for (int w = 0; w < 4; ++w) {
+    const Wheel& W = wheels_[w];
+    const double coupling = W.spinInertia * W.axisY.z() * W.spinSign;
+    out.F(Spin + w) = W.spinInertia * a(Spin + w) + coupling * a(2) - Qspin[w] +
+                      W.spinSign * W.spinInertia * (W.steeringSpinRate + r * W.tiltRate);
+    out.F(2) += coupling * a(Spin + w) + W.spinInertia * kinematics_[w].spinRate * W.tiltRate;
+  }
+  if (!out.F.allFinite()) {
+    msg.set("non-finite equations of motion at t = %.6g s", t);
+    return integ::EvalStatus::Recoverable;
+  }
+  return integ::EvalStatus::Ok;
+}
+
+bool PlanarCar::massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) {
+  updateSteering(t);
+  const Mat3 RJ = rollPitch(q(Roll), q(Pitch));
+  const Vec3 e = RJ.col(1), rho = RJ * comArm0_, P = axisPoint_ + rho;
+  const std::array<Vec3, 5> Jv{kX, kY, kZ.cross(P), kX.cross(rho), e.cross(rho)};
+  const std::array<Vec3, 5> Jw{Vec3::Zero(), Vec3::Zero(), kZ, kX, e};
+  const Mat3 I = RJ * inertia0_ * RJ.transpose();
+  Fa.setZero(kCoordinates, kCoordinates);
+  for (int j = 0; j < 5; ++j)
+    for (int k = 0; k < 5; ++k) Fa(j, k) = sprungMass_ * Jv[j].dot(Jv[k]) + Jw[j].dot(I * Jw[k]);
+  Fa(0, 0) += baseMass_;
+  Fa(1, 1) += baseMass_;
+  Fa(0, 2) -= baseMoment_.y();
+  Fa(2, 0) -= baseMoment_.y();
+  Fa(1, 2) += baseMoment_.x();
+  Fa(2, 1) += baseMoment_.x();
+  Fa(2, 2) += baseYawInertia_;
+  for (int w = 0; w < 4; ++w) {
+    const Wheel& W = wheels_[w];
+    Fa(Spin + w, Spin + w) = W.spinInertia;
+    Fa(2, Spin + w) = Fa(Spin + w, 2) = W.spinInertia * W.axisY.z() * W.spinSign;
+  }
+  return true;
+}
+
+void PlanarCar::toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const {
+  const mb::Model& m = vehicle_.model;
+  const VehicleLayout& L = vehicle_.layout;
+  qm = mb::neutralPositions(m);
+  vm.setZero(m.nv);
+  const int bq = m.bodies[L.base].qIndex, bv = m.bodies[L.base].vIndex;
+  const int sq = m.bodies[L.chassis].qIndex, sv = m.bodies[L.chassis].vIndex;
+  qm.segment<3>(bq) = q.head<3>();
+  vm.segment<3>(bv) = v.head<3>();
+  qm.segment<2>(sq) = q.segment<2>(Roll);
+  vm.segment<2>(sv) = v.segment<2>(Roll);
+  for (int w = 0; w < 4; ++w) {
+    qm(wheels_[w].multibodyQ) = q(Spin + w);
+    vm(wheels_[w].multibodyV) = v(Spin + w);
+  }
+  const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  for (const auto& [iq, iv] : drivenCoordinates_) {
+    qm(iq) = rack.value;
+    vm(iv) = rack.rate;
+  }
+}
+
+void PlanarCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const {
+  const mb::Model& m = vehicle_.model;
+  const VehicleLayout& L = vehicle_.layout;
+  q.resize(kCoordinates);
+  v.resize(kCoordinates);
+  const int bq = m.bodies[L.base].qIndex, bv = m.bodies[L.base].vIndex;
+  const int sq = m.bodies[L.chassis].qIndex, sv = m.bodies[L.chassis].vIndex;
+  q.head<3>() = qm.segment<3>(bq);
+  v.head<3>() = vm.segment<3>(bv);
+  q.segment<2>(Roll) = qm.segment<2>(sq);
+  v.segment<2>(Roll) = vm.segment<2>(sv);
+  for (int w = 0; w < 4; ++w) {
+    q(Spin + w) = qm(wheels_[w].multibodyQ);
+    v(Spin + w) = vm(wheels_[w].multibodyV);
+  }
+}
+
+}  // namespace bdfcar::vehicle

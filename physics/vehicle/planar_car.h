@@ -1,0 +1,137 @@
+// The planar rung in closed form (issue 25): the equations of motion of the
+// planar model (planar_model.h) written out for its one topology, with the
+// steering as an input, instead of the generic multibody machinery (joint
+// recursion, rack drivers as constraints, their multipliers). 9 coordinates,
+// no constraint: the base's x, y and yaw on the road plane, the sprung
+// body's roll and pitch about the roll axis, the four wheel spins.
+//
+// Everything is taken from the multibody planar model it stands for (one
+// derivation, one set of numbers): the sprung body as it is (mass, centre
+// of mass, inertia, its universal joint); the bodies fixed in the base (the
+// base, the unsteered wheels) lumped into one; those the rack moves (the
+// rack, the steered carriers and wheels) as tables over the rack travel,
+// sampled from the multibody model and evaluated once per step at the rack
+// signal: their first moment, yaw inertia and angular momentum per rack
+// rate (the steering's own inertia), each steered wheel's centre, axis and
+// the carrier's turn about that axis; each wheel's spin inertia about its
+// axis. The forces are VehicleForces' force laws, fed by per-wheel
+// kinematics (one tyre model, one terrain query path): tyres with the
+// planar load transfer and wheel attitude, brakes, drive torques, anti-roll
+// bars, drag and lift.
+//
+// Not carried (the constructor refuses, the multibody planar model runs
+// instead): a powertrain (its engine is one more coordinate on the sprung
+// body), wheels that are not symmetric about their spin axis.
+//
+// Coordinates: q = (x, y, yaw, roll, pitch, spin FL FR RL RR) as the
+// multibody model's planar, universal and spin joints; v = (forward,
+// sideways in the base frame, yaw rate, roll rate, pitch rate, the spins'
+// joint rates).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "integrator/dae.h"
+#include "multibody/multibody_dae.h"
+#include "multibody/spline_grid.h"
+#include "multibody/time_signal.h"
+#include "terrain/terrain.h"
+#include "vehicle/vehicle_builder.h"
+#include "vehicle/vehicle_forces.h"
+
+namespace bdfcar::vehicle {
+
+class PlanarCar final : public integ::Dae {
+ public:
+  static constexpr int kCoordinates = 9;
+  enum Index { X = 0, Y = 1, Yaw = 2, Roll = 3, Pitch = 4, Spin = 5 };  // q; v: forward, sideways, yaw rate, ...
+
+  // planar: a multibody planar model (Vehicle::planar set). Throws
+  // mb::ModelError naming what the closed form does not carry.
+  PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, const TerrainContactOptions& options = {});
+
+  // The rack travel (m along the rack, as the multibody model's rack drivers).
+  void setRack(const mb::TimeSignal* rack) { rack_ = rack; }
+  void setLimits(const mb::StateLimits& l) { limits_ = l; }
+  VehicleForces& forces() { return forces_; }
+  const VehicleForces& forces() const { return forces_; }
+
+  // The multibody planar model's coordinates for this model's (q, v) at time
+  // t (its rack and steered carriers from the rack signal), and back.
+  void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const;
+  void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
+
+  integ::DaeSizes sizes() const override { return {kCoordinates, kCoordinates, 0}; }
+  void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
+  void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
+  void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
+  void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
+  integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
+                               integ::Message& msg) override;
+  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
+                             integ::Message& msg) override;
+  const std::vector<int>& fastColumns() const override { return fastColumns_; }
+  bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
+  bool constraintJacobian(double, const integ::Vec&, integ::Mat& Phi_q) override {
+    Phi_q.resize(0, kCoordinates);  // no constraint: nothing to difference
+    return true;
+  }
+
+ private:
+  // A wheel as the closed form sees it, in the base frame.
+  struct Wheel {
+    double spinInertia = 0;        // kg m^2 about the spin axis
+    double spinSign = 1;           // the spin joint's axis along the wheel's y (+1 or -1)
+    int table = -1;                // steered: index in tables_; -1: fixed in the base
+    Vec3 centre, axisY;            // fixed wheels (and the steered ones at the current rack)
+    Vec3 centreRate = Vec3::Zero();  // d centre / d rack travel times the rack rate
+    double steeringSpin = 0;         // the carrier's angular velocity about the wheel's axis
+    double steeringSpinRate = 0;     // its time derivative
+    double tiltRate = 0;             // d/dt of the axis' z component (the steering tilts it)
+    int multibodyQ = 0, multibodyV = 0;
+  };
+  // The geometry of the step's time (the steered wheels at the rack signal).
+  void updateSteering(double t);
+  const Vehicle& vehicle_;
+  VehicleForces forces_;
+  const mb::TimeSignal* rack_ = nullptr;
+  mb::StateLimits limits_;
+  std::vector<int> fastColumns_{Spin, Spin + 1, Spin + 2, Spin + 3};
+
+  // Everything but the sprung body, riding on the base: its mass, first
+  // moment in the base plane and yaw inertia about the base origin (at the
+  // step's rack travel); what of it the rack moves, over the rack travel
+  // (first moment x, y, yaw inertia, angular momentum about z per rack rate);
+  // the generalised forces its motion relative to the base asks for.
+  double baseMass_ = 0, baseYawInertia_ = 0, fixedYawInertia_ = 0;
+  Vec3 baseMoment_ = Vec3::Zero(), fixedMoment_ = Vec3::Zero();  // sum m p (x, y used)
+  bool steered_ = false;
+  mb::SplineGrid steering_;
+  Eigen::Vector2d steeringForce_ = Eigen::Vector2d::Zero(), steeringCoriolis_ = Eigen::Vector2d::Zero();
+  double steeringYaw_ = 0, steeringYawCoriolis_ = 0;
+  // The sprung body about its roll and pitch axis.
+  Vec3 axisPoint_;                  // in the base frame
+  Mat3 sprungRest_;                 // body axes in the base frame at zero roll and pitch
+  Vec3 jointInBody_;                // the joint point in the body frame
+  double sprungMass_ = 0;
+  Vec3 comArm0_;                    // axis point -> centre of mass at zero roll and pitch (base frame)
+  Mat3 inertia0_;                   // about the centre of mass, base axes at zero roll and pitch
+  Vec3 gravity_;
+  double groundZ_ = 0;
+  std::array<Wheel, 4> wheels_;
+  std::vector<mb::SplineGrid> tables_;  // steered wheels over the rack travel: centre (3), y axis (3), spin per travel
+  double steeringTime_;
+  mb::SignalValue rackNow_;
+  int multibodyRackQ_ = -1, multibodyRackV_ = -1;
+  std::vector<std::pair<int, int>> drivenCoordinates_;  // multibody (q, v) indices the rack drivers tie
+
+  // The last residual evaluation's wheel kinematics (what the step's
+  // acceptance advances the force laws' states with, as the multibody
+  // model's acceptance does).
+  std::array<tyre::WheelKinematics, 4> kinematics_;
+  std::array<double, 4> relativeSpin_{};
+};
+
+}  // namespace bdfcar::vehicle
