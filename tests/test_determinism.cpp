@@ -87,6 +87,22 @@ TEST(Golden, JTurnTelemetryHash) {
   std::filesystem::remove(o.telemetryPath);
 }
 
+TEST(Golden, AutoJTurnTelemetryHash) {
+  // The ladder under `auto`: the kinematic model and the closed-form planar
+  // one, switched between in mid-run.
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(kSource + "/assets/scenarios/jturn.toml");
+  ASSERT_TRUE(scenario::parseFidelity("auto", spec.fidelity));
+  scenario::Simulation sim(spec);
+  ASSERT_EQ(sim.rungCount(), 2);
+  scenario::RunOptions o;
+  o.telemetryPath = temp("jturn_auto.csv");
+  o.keepSamples = false;
+  ASSERT_TRUE(scenario::runScenario(sim, o).ok);
+  EXPECT_GT(sim.fidelitySwitches(), 0);
+  checkGolden("jturn_auto", fileHash(o.telemetryPath));
+  std::filesystem::remove(o.telemetryPath);
+}
+
 TEST(Golden, ReplayedDriveTelemetryHash) {
   // A recorded drive (tests/data/weave_300.rec) replayed as `drive --replay
   // --batch` does: a rewindable session, the recording's ticks.

@@ -292,23 +292,27 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     // K*-orthogonal correction that restores the linearised velocity
     // constraint Phi_q v + Phi_t + (Phi_q v)_q dq + Phi_q dv = 0.
     dv_ = cj * (dq_ + rhoQ_);
-    c_.noalias() = -(J_ * dv_);
-    c_.noalias() -= dx_.phiDotQ * dq_;
-    c_ -= r_.phiDot;
-    // Only the velocity rows of the solution are used (the fast columns
-    // index velocities, so the low-rank update needs no more).
-    e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
-    applyLowRankUpdate(e_, nv);
-    dv_ += e_.head(nv);
+    if (nc > 0) {  // (an ODE, e.g. the closed-form planar car, has no constraint to restore)
+      c_.noalias() = -(J_ * dv_);
+      c_.noalias() -= dx_.phiDotQ * dq_;
+      c_ -= r_.phiDot;
+      // Only the velocity rows of the solution are used (the fast columns
+      // index velocities, so the low-rank update needs no more).
+      e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
+      applyLowRankUpdate(e_, nv);
+      dv_ += e_.head(nv);
+    }
     // (3.14): the same for the accelerations and g + g_q dq + g_v dv + Phi_q da = 0.
     da_ = cj * (dv_ + rhoV_);
-    c_.noalias() = -(J_ * da_);
-    c_.noalias() -= dx_.phiDDotQ * dq_;
-    c_.noalias() -= dx_.phiDDotV * dv_;
-    c_ -= r_.phiDDot;
-    e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
-    applyLowRankUpdate(e_, nv);
-    da_ += e_.head(nv);
+    if (nc > 0) {
+      c_.noalias() = -(J_ * da_);
+      c_.noalias() -= dx_.phiDDotQ * dq_;
+      c_.noalias() -= dx_.phiDDotV * dv_;
+      c_ -= r_.phiDDot;
+      e_.head(nv).noalias() = Ainv_.topRightCorner(nv, nc) * c_;
+      applyLowRankUpdate(e_, nv);
+      da_ += e_.head(nv);
+    }
     counters_.solves += 3;
     ++counters_.newtonIterations;
 

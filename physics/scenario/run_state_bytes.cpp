@@ -213,7 +213,7 @@ std::optional<std::string> Simulation::misfit(const RunState& s) const {
   }
   if (s.rung < 0 || s.rung >= rungCount())
     return "rung " + std::to_string(s.rung) + " of a simulation with " + std::to_string(rungCount());
-  const integ::DaeSizes n = rungs_[static_cast<size_t>(s.rung)].dae->sizes();
+  const integ::DaeSizes n = rungs_[static_cast<size_t>(s.rung)].stepping->sizes();
   if (s.integrator.history.empty()) return std::string("no integrator history");
   for (const integ::SolutionPoint& p : s.integrator.history)
     if (p.q.size() != n.nq || p.v.size() != n.nv || p.a.size() != n.nv || p.lambda.size() != n.nc)

@@ -342,6 +342,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     if (!parseFidelity(susp, s.fidelity))
       f->fail("unknown suspension model '" + susp + "': expected " + vehicle::rungNames() + " or auto", "suspension");
     s.fidelity.errorBudget = f->number("error_budget", Dimension::None, kErrorBudget, s.fidelity.errorBudget);
+    const std::string form = f->string("planar_equations", "closed");
+    if (form != "closed" && form != "multibody")
+      f->fail("unknown planar_equations '" + form + "': expected closed or multibody", "planar_equations");
+    s.fidelity.planarClosedForm = form == "closed";
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

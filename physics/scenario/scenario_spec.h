@@ -96,6 +96,10 @@ struct FidelitySpec {
   vehicle::Fidelity suspension = vehicle::Fidelity::Linkage;
   bool automatic = false;
   double errorBudget = 0.10;  // fraction of the linkage's peak: RMS of yaw rate, a_y, roll and chassis height
+  // The planar rung's equations: written out in closed form (vehicle/planar_car.h),
+  // or through the generic multibody machinery (the same equations, several
+  // times the cost: kept to measure one against the other).
+  bool planarClosedForm = true;
 };
 
 // The default error budget of `auto` (fidelity.error_budget): each derived

@@ -259,7 +259,9 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   }
   forces_->reset(t0);
   integ::Message im;
-  if (integrator_->initialize(t0, q, v, im) != integ::EvalStatus::Ok)
+  integ::Vec qs, vs;  // in the stepping model's coordinates
+  fromMultibody(active_, q, v, qs, vs);
+  if (integrator_->initialize(t0, qs, vs, im) != integ::EvalStatus::Ok)
     throw std::runtime_error(std::string("initial state: ") + im.c_str());
   prepared_ = true;
   airborne_ = 0;
@@ -352,7 +354,12 @@ std::optional<std::string> Simulation::belowGround() const {
   // whose ray found no ground (the ray starts a radius above the centre) may
   // be deep inside it: a ray from far above to the centre tells. The
   // chassis is looked at only when a wheel is off the ground.
+  // The wheel centres of the last residual evaluation (the closed form's
+  // own, or the multibody model's), the chassis frame at the accepted state.
   const mb::Data& d = dae_->data();
+  const auto centre = [&](int w) -> const Eigen::Vector3d& {
+    return car_ ? car_->wheelCentre(w) : d.p[vehicle().layout.wheels[w].spindle];
+  };
   const auto groundAbove = [&](const Eigen::Vector3d& p) {
     constexpr double kAbove = 20.0;  // m
     return world_->terrain->castRay(p + kAbove * Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(), kAbove).hit;
@@ -360,7 +367,7 @@ std::optional<std::string> Simulation::belowGround() const {
   char buf[300];
   bool lifted = false;
   for (int w = 0; w < 4; ++w) {
-    const Eigen::Vector3d& c = d.p[vehicle().layout.wheels[w].spindle];
+    const Eigen::Vector3d& c = centre(w);
     const vehicle::WheelContact& wc = forces_->wheels()[w];
     const bool sunk = wc.plane.valid ? (c - wc.plane.point).dot(wc.plane.normal) < 0 : groundAbove(c);
     lifted = lifted || !wc.plane.valid || !wc.acceptedInContact;
@@ -371,7 +378,7 @@ std::optional<std::string> Simulation::belowGround() const {
     return std::string(buf);
   }
   if (!lifted) return std::nullopt;
-  const Eigen::Vector3d& com = d.p[vehicle().layout.chassis];  // its reference frame's origin
+  const Eigen::Vector3d com = car_ ? car_->chassisOrigin(integrator_->current().q) : d.p[vehicle().layout.chassis];  // its reference frame's origin
   if (!groundAbove(com)) return std::nullopt;
   std::snprintf(buf, sizeof buf, "the chassis went below the ground at t = %.2f s (x = %.1f m, y = %.1f m, z = %.2f m, %s model)",
                 time(), com.x(), com.y(), com.z(), vehicle::fidelityName(vehicle().fidelity));
@@ -442,19 +449,22 @@ void Simulation::restore(const RunState& s) {
 Simulation::ConstraintViolation Simulation::constraintViolation() {
   const integ::SolutionPoint& p = integrator_->current();
   integ::Residual r;
-  r.resize(dae_->sizes());
+  r.resize(stepping_->sizes());
   integ::Message msg;
   // The evaluation leaves its outputs in the force laws' state: put it back,
   // so that looking does not change the run.
   const vehicle::VehicleForces::State keep = forces_->state();
-  const integ::EvalStatus st = dae_->residual(p.t, p.q, p.v, p.a, p.lambda, r, true, msg);
+  const integ::EvalStatus st = stepping_->residual(p.t, p.q, p.v, p.a, p.lambda, r, true, msg);
   forces_->setState(keep);
   if (st != integ::EvalStatus::Ok) return {INFINITY, INFINITY, INFINITY};
   auto maxAbs = [](const integ::Vec& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; };
   return {maxAbs(r.phi), maxAbs(r.phiDot), maxAbs(r.phiDDot)};
 }
 
-vehicle::VehicleSample Simulation::sample() { return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, integrator_->current()); }
+vehicle::VehicleSample Simulation::sample() {
+  if (!car_) return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, integrator_->current());
+  return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, multibodyPoint());
+}
 
 vehicle::VehicleView Simulation::view() { return vehicle::viewVehicle(vehicle(), *dae_, *forces_, time()); }
 

@@ -40,6 +40,7 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/kinematic_model.h"
+#include "vehicle/planar_car.h"
 #include "vehicle/planar_model.h"
 #include "vehicle/vehicle_forces.h"
 #include "vehicle/vehicle_sample.h"
@@ -234,7 +235,7 @@ class Simulation {
     double yaw = 0, vx = 0, yawRate = 0;
   };
   ChassisState chassisState() const;
-  std::unique_ptr<integ::Integrator> makeIntegrator(mb::MultibodyDae& dae) const;
+  std::unique_ptr<integ::Integrator> makeIntegrator(integ::Dae& dae) const;
   void applyDrive(const DriverInput& in, double vx, double h);
   // A powertrain car's step: the speed hold works the pedals, the
   // transmission decides gear and clutch; the handbrake on the rear wheels.
@@ -242,14 +243,25 @@ class Simulation {
   DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx) const;
   void steerToward(double command);
 
-  // One model of the vehicle with its force laws and integrator.
+  // One model of the vehicle with its force laws and integrator. A planar
+  // model steps in closed form (car: its own force laws; dae is then the
+  // multibody model of the same equations, evaluated for outputs only).
   struct Rung {
     const vehicle::Vehicle* vehicle = nullptr;
     std::unique_ptr<vehicle::VehicleForces> forces;
     std::unique_ptr<mb::MultibodyDae> dae;
+    std::unique_ptr<vehicle::PlanarCar> car;
+    integ::Dae* stepping = nullptr;  // dae or car
     std::unique_ptr<integ::Integrator> integrator;
     mb::Data scratch;  // poses for the switch's jump check (no allocation then)
   };
+  // The current point in the active rung's multibody coordinates (what the
+  // integrator holds, or a closed-form planar model's mapped: its rack
+  // multipliers from the multibody residual).
+  integ::SolutionPoint multibodyPoint();
+  // The multibody coordinates of a rung's (q, v) at time t, and back.
+  void toMultibody(int rung, double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const;
+  void fromMultibody(int rung, const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
   struct ChassisPose {
     Eigen::Vector3d p;
     Eigen::Matrix3d R;
@@ -266,7 +278,9 @@ class Simulation {
   int active_ = 0;
   // The active rung's parts.
   vehicle::VehicleForces* forces_ = nullptr;
-  mb::MultibodyDae* dae_ = nullptr;
+  mb::MultibodyDae* dae_ = nullptr;          // the multibody model (a closed form's: for outputs only)
+  vehicle::PlanarCar* car_ = nullptr;        // the closed-form planar model stepping, if it is one
+  integ::Dae* stepping_ = nullptr;
   integ::Integrator* integrator_ = nullptr;
   std::optional<FidelityPolicy> policy_;
   FidelityPolicy::State policyState_;

@@ -96,9 +96,11 @@ Simulation::ChassisState Simulation::chassisState() const {
   if (vehicle().planar) {
     // The planar joint: (x, y, yaw) and (forward, sideways, yaw rate) of the
     // base; the centre of mass where it sits on the base at rest.
+    // (The closed-form planar model holds them first.)
     const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
-    const double* qb = p.q.data() + b.qIndex;
-    const double u = p.v(b.vIndex), r = p.v(b.vIndex + 2);
+    const double* qb = p.q.data() + (car_ ? int(vehicle::PlanarCar::X) : b.qIndex);
+    const int bv = car_ ? 0 : b.vIndex;
+    const double u = p.v(bv), r = p.v(bv + 2);
     const Eigen::Vector3d c = vehicle().planar->comInBase;
     const double cy = pm::cos(qb[2]), sy = pm::sin(qb[2]);
     ChassisState s;

@@ -10,6 +10,7 @@
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
 #include "multibody/kinematics.h"
+#include "multibody/model_error.h"
 #include "vehicle/rung_mapping.h"
 #include "portable_math.h"
 
@@ -20,9 +21,22 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   r.vehicle = &veh;
   vehicle::TerrainContactOptions contact;
   contact.raysPerWheel = spec().raysPerWheel;
-  r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
   r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
-  r.dae->addForceProvider(r.forces.get());
+  if (veh.planar && spec().fidelity.planarClosedForm) {
+    // The planar model in closed form where it carries the car (not a
+    // powertrain's engine): its force laws are the multibody model's too.
+    try {
+      r.car = std::make_unique<vehicle::PlanarCar>(veh, *world_->terrain, contact);
+      r.car->setRack(&rack_);
+      r.dae->addForceProvider(&r.car->forces());
+    } catch (const mb::ModelError&) {
+      r.car.reset();
+    }
+  }
+  if (!r.car) {
+    r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
+    r.dae->addForceProvider(r.forces.get());
+  }
   // A wheel's spin column of the Jacobian is dominated by its tyre's slip
   // stiffness, which collapses when the tyre saturates (a rough road flips
   // a tyre between the regimes from one step to the next): the integrator
@@ -33,12 +47,13 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   // Every driver of a vehicle model is the rack's: the rack itself and, in a
   // derived model, the rack travel of each steered corner's table.
   for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
-  r.integrator = makeIntegrator(*r.dae);
+  r.stepping = r.car ? static_cast<integ::Dae*>(r.car.get()) : r.dae.get();
+  r.integrator = makeIntegrator(*r.stepping);
   r.scratch = mb::makeData(veh.model);
   return r;
 }
 
-std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(mb::MultibodyDae& dae) const {
+std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae) const {
   const IntegratorSpec& is = spec().integrator;
   if (is.method == IntegratorMethod::Bdf) return std::make_unique<integ::BdfIntegrator>(dae, is.bdf);
   integ::ExplicitOptions o = is.explicitMethod;
@@ -48,9 +63,37 @@ std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(mb::MultibodyDae& 
 
 void Simulation::activate(int rung) {
   active_ = rung;
-  forces_ = rungs_[rung].forces.get();
-  dae_ = rungs_[rung].dae.get();
-  integrator_ = rungs_[rung].integrator.get();
+  Rung& r = rungs_[rung];
+  car_ = r.car.get();
+  forces_ = car_ ? &car_->forces() : r.forces.get();
+  dae_ = r.dae.get();
+  stepping_ = r.stepping;
+  integrator_ = r.integrator.get();
+}
+
+void Simulation::toMultibody(int rung, double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm,
+                             integ::Vec& vm) const {
+  if (const vehicle::PlanarCar* car = rungs_[rung].car.get()) {
+    car->toMultibody(t, q, v, qm, vm);
+    return;
+  }
+  qm = q;
+  vm = v;
+}
+
+void Simulation::fromMultibody(int rung, const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const {
+  if (const vehicle::PlanarCar* car = rungs_[rung].car.get()) {
+    car->fromMultibody(qm, vm, q, v);
+    return;
+  }
+  q = qm;
+  v = vm;
+}
+
+integ::SolutionPoint Simulation::multibodyPoint() {
+  const integ::SolutionPoint& p = integrator_->current();
+  if (!car_) return p;
+  return car_->multibodyPoint(p, *dae_);
 }
 
 Simulation::ChassisPose Simulation::chassisPose(int rung, const integ::Vec& q) {
@@ -64,14 +107,15 @@ bool Simulation::switchRung(int rung) {
   if (rung == active_) return true;
   if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
   const integ::SolutionPoint from = integrator_->current();
-  Eigen::VectorXd q, v;
-  if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, from.q, from.v, q, v);
-  else vehicle::planarToKinematic(*world_->planar, world_->vehicle, from.q, from.v, q, v);
+  Eigen::VectorXd fromQ, fromV, q, v;
+  toMultibody(active_, from.t, from.q, from.v, fromQ, fromV);
+  if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, fromQ, fromV, q, v);
+  else vehicle::planarToKinematic(*world_->planar, world_->vehicle, fromQ, fromV, q, v);
   // A switch never moves the chassis: what the mapping drops (heave, the
   // travels) must be what the lower rung would have anyway. Up, the mapping
   // copies the sprung body's pose (a jump there would be a bug, and staying
   // on a rung outside its validity is no option: it is measured, not refused).
-  const ChassisPose a = chassisPose(active_, from.q), b = chassisPose(rung, q);
+  const ChassisPose a = chassisPose(active_, fromQ), b = chassisPose(rung, q);
   const double jump = (b.p - a.p).norm();
   const Eigen::Matrix3d M = a.R.transpose() * b.R;
   const Eigen::Vector3d axis(M(2, 1) - M(1, 2), M(0, 2) - M(2, 0), M(1, 0) - M(0, 1));
@@ -86,7 +130,9 @@ bool Simulation::switchRung(int rung) {
   activate(rung);
   forces_->setState(forces);
   integ::Message msg;
-  if (integrator_->restart(from.t, q, v, msg) != integ::EvalStatus::Ok)
+  Eigen::VectorXd toQ, toV;
+  fromMultibody(rung, q, v, toQ, toV);
+  if (integrator_->restart(from.t, toQ, toV, msg) != integ::EvalStatus::Ok)
     throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
                              " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
   ++policyState_.switches;

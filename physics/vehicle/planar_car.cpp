@@ -67,6 +67,10 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
   sprungMass_ = sprung.mass;
   comArm0_ = sprungRest_ * (sprung.com - jointInBody_);
   inertia0_ = sprungRest_ * fullInertia(sprung) * sprungRest_.transpose();
+  for (int w = 0; w < 4; ++w) {
+    cornerArm_[w] = sprungRest_ * (planar.planar->sprungPoint[w] - jointInBody_);
+    turnPerTravel_[w] = sprungRest_ * planar.planar->turnPerTravel[w];
+  }
 
   // Everything else rides on the base: the bodies fixed in it lumped into
   // one, those the rack moves (the rack, the steered carriers and wheels)
@@ -187,7 +191,12 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
 
 void PlanarCar::updateSteering(double t) {
   if (t == steeringTime_) return;
-  rackNow_ = rack_ ? rack_->at(t) : mb::SignalValue{};
+  const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  steeringTime_ = t;
+  // A rack held where it was (a straight, a steady turn) moves nothing.
+  if (rack.value == rackNow_.value && rack.rate == rackNow_.rate && rack.accel == rackNow_.accel && steeringValid_) return;
+  rackNow_ = rack;
+  steeringValid_ = true;
   const double c = rackNow_.value, cd = rackNow_.rate, cdd = rackNow_.accel;
   mb::SplineGrid::Sample s;
   if (steered_) {
@@ -216,7 +225,6 @@ void PlanarCar::updateSteering(double t) {
     W.steeringSpinRate = cdd * s.f[6] + cd * cd * s.grad[6][0];
     W.tiltRate = cd * s.grad[5][0];
   }
-  steeringTime_ = t;
 }
 
 void PlanarCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
@@ -278,7 +286,9 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   const VehicleSpec& spec = vehicle_.spec;
   const Heading yaw = headingOf(q(Yaw));
   const Mat3 RJ = rollPitch(q(Roll), q(Pitch));
-  const Mat3 Rs = RJ * sprungRest_;  // the sprung body's axes in the base frame
+  const bool lift = spec.liftAreaFront != 0 || spec.liftAreaRear != 0;
+  Mat3 Rs;  // the sprung body's axes in the base frame (what the bars and the lift need)
+  if (lift || !spec.antiRollBars.empty()) Rs.noalias() = RJ * sprungRest_;
   const Vec3 e = RJ.col(1);          // the pitch axis
   const double u = v(0), vs = v(1), r = v(2), rollRate = v(3), pitchRate = v(4);
   const Vec3 rho = RJ * comArm0_, P = axisPoint_ + rho;
@@ -306,7 +316,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   // reaction on the base is vertical: no work in the plane).
   std::array<double, 4> load, travel;
   for (int w = 0; w < 4; ++w) {
-    const Vec3 ps = sprungPoint(PL.sprungPoint[w]);
+    const Vec3 ps = axisPoint_ + RJ * cornerArm_[w];
     const double z = ps.z() - PL.basePoint[w].z();
     const double zd = omegaRel.cross(ps - axisPoint_).z();
     travel[w] = -PL.suspensionShare[w] * z;
@@ -339,7 +349,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   for (int w = 0; w < 4; ++w) {
     const Wheel& W = wheels_[w];
     Vec3 axis = RJ * W.axisY;  // the tyre sees the body's roll and pitch and the carrier's turn over its travel
-    axis += (Rs * (travel[w] * PL.turnPerTravel[w])).cross(axis);
+    axis += (travel[w] * (RJ * turnPerTravel_[w])).cross(axis);
     axis.normalize();
     tyre::WheelKinematics& k = kinematics_[w];
     k.centre = origin + yaw.toWorld(W.centre);
@@ -373,7 +383,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   // Air: drag at the sprung body's centre of mass, lift above the axles.
   const Vec3 vc = u * kX + vs * kY + r * kZ.cross(P) + omegaRel.cross(rho);
   if (spec.dragArea > 0) onSprung(P, -spec.dragArea * vc.norm() * vc);
-  if (spec.liftAreaFront != 0 || spec.liftAreaRear != 0) {
+  if (lift) {
     const double air = Rs.col(0).dot(vc);
     const Vec3& com = vehicle_.model.bodies[vehicle_.layout.chassis].com;
     for (int axle = 0; axle < 2; ++axle) {
@@ -465,6 +475,33 @@ void PlanarCar::toMultibody(double t, const integ::Vec& q, const integ::Vec& v, 
     qm(iq) = rack.value;
     vm(iv) = rack.rate;
   }
+}
+
+integ::SolutionPoint PlanarCar::multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view) {
+  const mb::Model& m = vehicle_.model;
+  integ::SolutionPoint out;
+  out.t = p.t;
+  toMultibody(p.t, p.q, p.v, out.q, out.v);
+  integ::Vec unusedQ;
+  toMultibody(p.t, p.q, p.a, unusedQ, out.a);  // the accelerations map as the velocities do, but for the rack's
+  const mb::SignalValue rack = rack_ ? rack_->at(p.t) : mb::SignalValue{};
+  for (const auto& driven : drivenCoordinates_) out.a(driven.second) = rack.accel;
+  // F = tau - joint forces, tau holding each driver's multiplier on its
+  // coordinate: with none, the residual there is minus the multiplier.
+  out.lambda = integ::Vec::Zero(m.nc);
+  integ::Residual r;
+  r.resize(view.sizes());
+  integ::Message msg;
+  if (view.residual(p.t, out.q, out.v, out.a, out.lambda, r, false, msg) == integ::EvalStatus::Ok)
+    for (const mb::CutJoint& c : m.cutJoints)
+      out.lambda(c.row) = -r.F(m.bodies[c.drivenBody].vIndex + c.drivenCoordinate);
+  return out;
+}
+
+Vec3 PlanarCar::chassisOrigin(const integ::Vec& q) const {
+  const Heading yaw = headingOf(q(Yaw));
+  const Vec3 p = axisPoint_ - rollPitch(q(Roll), q(Pitch)) * sprungRest_ * jointInBody_;
+  return Vec3(q(X), q(Y), groundZ_) + yaw.toWorld(p);
 }
 
 void PlanarCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const {

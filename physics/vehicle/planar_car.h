@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "integrator/dae.h"
+#include "integrator/step_types.h"
 #include "multibody/multibody_dae.h"
 #include "multibody/spline_grid.h"
 #include "multibody/time_signal.h"
@@ -61,6 +62,14 @@ class PlanarCar final : public integ::Dae {
   // t (its rack and steered carriers from the rack signal), and back.
   void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const;
   void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
+  // A solution point in the multibody model's coordinates, its rack drivers'
+  // multipliers (the rack force) from the multibody residual there: view
+  // must be that model with forces() as its force provider.
+  integ::SolutionPoint multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view);
+  // Wheel w's centre (world) at the last residual evaluation, and the
+  // sprung body's frame origin (world) at positions q.
+  const Vec3& wheelCentre(int w) const { return kinematics_[w].centre; }
+  Vec3 chassisOrigin(const integ::Vec& q) const;
 
   integ::DaeSizes sizes() const override { return {kCoordinates, kCoordinates, 0}; }
   void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
@@ -118,12 +127,16 @@ class PlanarCar final : public integ::Dae {
   double sprungMass_ = 0;
   Vec3 comArm0_;                    // axis point -> centre of mass at zero roll and pitch (base frame)
   Mat3 inertia0_;                   // about the centre of mass, base axes at zero roll and pitch
+  // Per corner, at zero roll and pitch in the base frame: the corner
+  // spring's point on the body from the axis point, the carrier's turn per travel.
+  std::array<Vec3, 4> cornerArm_, turnPerTravel_;
   Vec3 gravity_;
   double groundZ_ = 0;
   std::array<Wheel, 4> wheels_;
   std::vector<mb::SplineGrid> tables_;  // steered wheels over the rack travel: centre (3), y axis (3), spin per travel
   double steeringTime_;
-  mb::SignalValue rackNow_;
+  mb::SignalValue rackNow_;       // the rack the steering geometry is at
+  bool steeringValid_ = false;
   int multibodyRackQ_ = -1, multibodyRackV_ = -1;
   std::vector<std::pair<int, int>> drivenCoordinates_;  // multibody (q, v) indices the rack drivers tie
 
