@@ -86,22 +86,24 @@ bench_table() {
     # scan of the road ahead and its switches.
     declare -A linkageIr
     for run in "paper linkage <=70000" "sedan linkage <=100000" "paper kinematic -" "sedan kinematic <=25000" \
-               "sedan planar <=6000" "sedan auto -"; do
+               "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" "sedan auto -"; do
       set -- $run
-      v=$1 f=$2 target=$3
+      v=$1 f=$2 target=$3 extra=()
+      [ -n "${4:-}" ] && extra=(--set "$4")
       ir() {
-        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f.$1" "$build/app/bdfcar" run \
-          assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" --duration "$1" 2>&1 |
+        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f${extra:+.mb}.$1" "$build/app/bdfcar" run \
+          assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" "${extra[@]}" --duration "$1" 2>&1 |
           awk '/Collected/ { print $4 }'
       }
       rtf() {
         for _ in 1 2 3 4 5; do
-          "$build/app/bdfcar" run assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" 2>&1 |
+          "$build/app/bdfcar" run assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" "${extra[@]}" 2>&1 |
             sed -nE 's/.*real-time factor ([0-9]+).*/\1/p'
         done | sort -n | sed -n 3p
       }
       label="$v.toml"
       [ "$f" != linkage ] && label="$v.toml, \`--fidelity $f\`"
+      [ ${#extra[@]} -gt 0 ] && label="$label, the same equations in the multibody form (\`--set $4\`)"
       perStep=$(( ($(ir 6) - $(ir 1)) / 500 ))
       [ "$f" = linkage ] && linkageIr[$v]=$perStep
       share=$(awk -v a="$perStep" -v b="${linkageIr[$v]}" 'BEGIN { printf "%.2f", a / b }')
@@ -142,8 +144,9 @@ bench_table() {
     echo "residual, every 200 steps) is amortised; the rest of newton is the residual."
     echo
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
-    echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the generic"
-    echo "multibody passes, the back-substitution and the tyres, none of them dominant."
+    echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
+    echo "residual (two per step), the tyres, and the BDF step's own vector work and back-substitution,"
+    echo "which the rungs share: what is left to cut for the 6k target."
     echo
     echo "| function | instructions per step | share |"
     echo "|---|---|---|"

@@ -46,6 +46,14 @@ const Planar& sedan() {
   return p;
 }
 
+// The sedan with a powertrain: the crank is one more coordinate.
+const Planar& sedanDrive() {
+  static const Planar p("vehicles/sedan_drive.toml");
+  return p;
+}
+
+const Planar& vehicleNamed(const std::string& name) { return name == "sedan_drive" ? sedanDrive() : sedan(); }
+
 // Both models of one vehicle on level ground, with the same inputs.
 struct Pair {
   const vehicle::Vehicle& v;
@@ -64,6 +72,10 @@ struct Pair {
     car.forces().setBrakeCapacity(w, brake);
     forces.setDriveTorque(w, drive);
     forces.setBrakeCapacity(w, brake);
+    // A powertrain's: part throttle in a low gear, the clutch slipping.
+    const vehicle::DrivelineCommand c{0.6, 250.0, 12.0};
+    car.forces().setDriveline(c);
+    forces.setDriveline(c);
   }
 };
 
@@ -74,18 +86,24 @@ struct State {
 };
 
 void makeState(const vehicle::Vehicle& v, const State& s, integ::Vec& q, integ::Vec& vel) {
-  q.setZero(vehicle::PlanarCar::kCoordinates);
-  vel.setZero(vehicle::PlanarCar::kCoordinates);
+  const int n = vehicle::PlanarCar::kCoordinates + (v.layout.engine >= 0 ? 1 : 0);
+  q.setZero(n);
+  vel.setZero(n);
   q(vehicle::PlanarCar::X) = 3.0;
   q(vehicle::PlanarCar::Y) = -2.0;
   q(vehicle::PlanarCar::Yaw) = 0.4;
   q(vehicle::PlanarCar::Roll) = s.roll;
   q(vehicle::PlanarCar::Pitch) = s.pitch;
-  vel << s.forward, s.sideways, s.yawRate, s.rollRate, s.pitchRate, 0, 0, 0, 0;
+  vel.head<5>() << s.forward, s.sideways, s.yawRate, s.rollRate, s.pitchRate;
   for (int w = 0; w < 4; ++w) {
     const double R = tyre::unloadedRadius(v.wheel(w).tyre) * 0.97;
     vel(vehicle::PlanarCar::Spin + w) = v.layout.wheels[w].spinSign * (1 + s.slip) * s.forward / R;
     q(vehicle::PlanarCar::Spin + w) = 0.3 * w;
+  }
+  if (n > vehicle::PlanarCar::kCoordinates) {  // the crank a little faster than the driven wheels in its gear
+    const double wheels = v.layout.wheels[2].spinSign * vel(vehicle::PlanarCar::Spin + 2);
+    vel(vehicle::PlanarCar::Engine) = 12.0 * wheels + 5.0;
+    q(vehicle::PlanarCar::Engine) = 1.0;
   }
 }
 
@@ -120,10 +138,13 @@ Accelerations accelerations(Pair& p, double t, const integ::Vec& q, const integ:
   return out;
 }
 
-TEST(PlanarCar, SameAccelerationsAsTheMultibodyPlanarModel) {
+class PlanarCarOf : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PlanarCarOf, SameAccelerationsAsTheMultibodyPlanarModel) {
   // The same equations: any difference is an error in one of them (rounding
   // and the multibody model's constrained solve aside).
-  Pair p(sedan().vehicle());
+  Pair p(vehicleNamed(GetParam()).vehicle());
+  ASSERT_EQ(p.car.coordinates() + 3, p.v.model.nv);  // the rack and the steered carriers' rack travel
   struct Case {
     State state;
     double rack = 0, rackRate = 0, rackAccel = 0;
@@ -157,7 +178,7 @@ TEST(PlanarCar, SameAccelerationsAsTheMultibodyPlanarModel) {
     // those of the carriers' poses (the multibody model's): splines through
     // the same values, whose derivatives differ by their interpolation error.
     const double tolerance = cases[i].rackRate != 0 || cases[i].rackAccel != 0 ? 1e-6 : 1e-7;
-    for (int k = 0; k < vehicle::PlanarCar::kCoordinates; ++k)
+    for (int k = 0; k < p.car.coordinates(); ++k)
       EXPECT_NEAR(a.closed(k), a.multibody(k), tolerance * (1 + std::abs(a.multibody(k)))) << "case " << i << ", coordinate " << k;
   }
   EXPECT_TRUE(sawSaturated);
@@ -204,8 +225,8 @@ TEST(PlanarCar, TurnsAsTheMultibodyPlanarModel) {
   EXPECT_LT(rollPct, 0.005);
 }
 
-TEST(PlanarCar, MassMatrixIsTheResidualsDerivative) {
-  Pair p(sedan().vehicle());
+TEST_P(PlanarCarOf, MassMatrixIsTheResidualsDerivative) {
+  Pair p(vehicleNamed(GetParam()).vehicle());
   integ::Vec q, v;
   makeState(p.v, {18, 1.0, 0.4, 0.04, -0.02, 0.3, 0.1, 0.1}, q, v);
   p.rack.travel = 0.01;
@@ -228,8 +249,8 @@ TEST(PlanarCar, MassMatrixIsTheResidualsDerivative) {
   EXPECT_NEAR((M - M.transpose()).norm(), 0.0, 1e-12 * M.norm());
 }
 
-TEST(PlanarCar, CoordinatesMapToTheMultibodyModelAndBack) {
-  Pair p(sedan().vehicle());
+TEST_P(PlanarCarOf, CoordinatesMapToTheMultibodyModelAndBack) {
+  Pair p(vehicleNamed(GetParam()).vehicle());
   p.rack.travel = -0.02;
   integ::Vec q, v, qm, vm, q2, v2;
   makeState(p.v, {12, 0.7, -0.2, 0.01, 0.02, 0.1, 0.2, 0.0}, q, v);
@@ -241,11 +262,11 @@ TEST(PlanarCar, CoordinatesMapToTheMultibodyModelAndBack) {
   for (const mb::CutJoint& c : p.v.model.cutJoints) EXPECT_EQ(qm(p.v.model.bodies[c.drivenBody].qIndex), -0.02);
 }
 
-TEST(PlanarCar, RefusesWhatItDoesNotCarry) {
-  const Planar drive("vehicles/sedan_drive.toml");  // a powertrain: its engine is a coordinate more
+INSTANTIATE_TEST_SUITE_P(Vehicles, PlanarCarOf, ::testing::Values("sedan", "sedan_drive"));
+
+TEST(PlanarCar, RefusesWhatIsNotAPlanarModel) {
   const terrain::PlaneTerrain ground;
-  EXPECT_THROW(vehicle::PlanarCar(drive.vehicle(), ground), mb::ModelError);
-  EXPECT_THROW(vehicle::PlanarCar(drive.linkage, ground), mb::ModelError);  // not a planar model
+  EXPECT_THROW(vehicle::PlanarCar(sedan().linkage, ground), mb::ModelError);
 }
 
 }  // namespace

@@ -250,7 +250,7 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   }
   if (transmission_) {
     // In the gear that suits the speed, the engine at the speed it gives (idling at rest).
-    const DrivelineSpeeds s = drivelineSpeeds(v, spec().initialSpeed);
+    const DrivelineSpeeds s = drivelineSpeeds(v, spec().initialSpeed, true);
     transmission_->start(s.output, s.vx);
     const double locked = vehicle().spec.powertrain->gearbox.overall(transmission_->state().gear) * s.output;
     v(vehicle().layout.engineV) = transmission_->state().engagement >= 1.0
@@ -463,7 +463,7 @@ Simulation::ConstraintViolation Simulation::constraintViolation() {
 
 vehicle::VehicleSample Simulation::sample() {
   if (!car_) return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, integrator_->current());
-  return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, multibodyPoint());
+  return vehicle::sampleVehicle(vehicle(), *dae_, *forces_, multibodyPoint(), true);  // evaluated there
 }
 
 vehicle::VehicleView Simulation::view() { return vehicle::viewVehicle(vehicle(), *dae_, *forces_, time()); }

@@ -240,7 +240,8 @@ class Simulation {
   // A powertrain car's step: the speed hold works the pedals, the
   // transmission decides gear and clutch; the handbrake on the rear wheels.
   void applyPowertrain(DriverInput in, double vx, double h);
-  DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx) const;
+  // From the active rung's velocities (multibody: the multibody model's coordinates).
+  DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx, bool multibody = false) const;
   void steerToward(double command);
 
   // One model of the vehicle with its force laws and integrator. A planar

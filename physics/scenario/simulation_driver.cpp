@@ -12,14 +12,16 @@
 
 namespace bdfcar::scenario {
 
-DrivelineSpeeds Simulation::drivelineSpeeds(const integ::Vec& v, double vx) const {
+DrivelineSpeeds Simulation::drivelineSpeeds(const integ::Vec& v, double vx, bool multibody) const {
+  // The closed-form planar model holds the spins and the crank at its own places.
+  const bool closed = car_ && !multibody;
   DrivelineSpeeds s;
   s.vx = vx;
-  s.engine = v(vehicle().layout.engineV);
+  s.engine = v(closed ? int(vehicle::PlanarCar::Engine) : vehicle().layout.engineV);
   int n = 0;
   for (int w = 0; w < 4; ++w)
     if (vehicle().wheel(w).driven) {
-      s.output += vehicle().layout.wheels[w].spinSign * v(vehicle().layout.wheels[w].spinV);
+      s.output += vehicle().layout.wheels[w].spinSign * v(closed ? vehicle::PlanarCar::Spin + w : vehicle().layout.wheels[w].spinV);
       ++n;
     }
   s.output /= std::max(1, n);

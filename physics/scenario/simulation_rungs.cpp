@@ -23,8 +23,8 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   contact.raysPerWheel = spec().raysPerWheel;
   r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
   if (veh.planar && spec().fidelity.planarClosedForm) {
-    // The planar model in closed form where it carries the car (not a
-    // powertrain's engine): its force laws are the multibody model's too.
+    // The planar model in closed form where it carries the car (planar_car.h
+    // says what it refuses): its force laws are the multibody model's too.
     try {
       r.car = std::make_unique<vehicle::PlanarCar>(veh, *world_->terrain, contact);
       r.car->setRack(&rack_);

@@ -47,7 +47,6 @@ Mat3 rollPitch(double roll, double pitch) {
 PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, const TerrainContactOptions& options)
     : vehicle_(planar), forces_(planar, terrain, options), steeringTime_(std::numeric_limits<double>::quiet_NaN()) {
   if (!planar.planar) refuse("the vehicle is not a planar model");
-  if (planar.layout.engine >= 0) refuse("a powertrain's engine is not carried (the multibody planar model runs it)");
   const mb::Model& m = planar.model;
   const VehicleLayout& L = planar.layout;
   const mb::Body& base = m.bodies[L.base];
@@ -67,6 +66,7 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
   sprungMass_ = sprung.mass;
   comArm0_ = sprungRest_ * (sprung.com - jointInBody_);
   inertia0_ = sprungRest_ * fullInertia(sprung) * sprungRest_.transpose();
+  crankAxis0_ = sprungRest_.col(0);
   for (int w = 0; w < 4; ++w) {
     cornerArm_[w] = sprungRest_ * (planar.planar->sprungPoint[w] - jointInBody_);
     turnPerTravel_[w] = sprungRest_ * planar.planar->turnPerTravel[w];
@@ -85,11 +85,22 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
     const mb::Body& b = m.bodies[c.drivenBody];
     drivenCoordinates_.emplace_back(b.qIndex + c.drivenCoordinate, b.vIndex + c.drivenCoordinate);
   }
-  if (m.nv != kCoordinates + static_cast<int>(drivenCoordinates_.size()) || m.nq != m.nv)
+  if (L.engine >= 0) {
+    // The crank: a massless rotor about the sprung body's x axis (addEngine).
+    const mb::Body& e = m.bodies[L.engine];
+    if (e.parent != L.chassis || e.mass != 0 || !e.inertia.isZero() || !e.rotorAxis.isApprox(Vec3::UnitX()) ||
+        !e.inParent.axes.col(2).isApprox(Vec3::UnitX()) || !e.inChild.axes.col(2).isApprox(Vec3::UnitX()))
+      refuse("the engine is not a rotor about the sprung body's x axis");
+    engineInertia_ = e.rotorInertia;
+    engineQ_ = e.qIndex;
+    engineV_ = e.vIndex;
+    n_ = kCoordinates + 1;
+  }
+  if (m.nv != n_ + static_cast<int>(drivenCoordinates_.size()) || m.nq != m.nv)
     refuse("the planar model has coordinates the closed form does not carry");
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     const mb::Body& b = m.bodies[i];
-    if (static_cast<int>(i) == L.chassis) continue;
+    if (static_cast<int>(i) == L.chassis || static_cast<int>(i) == L.engine) continue;
     if (b.parent == L.chassis) refuse("body '" + b.name + "' rides on the sprung body");
     // Moved by the rack: its joint, or one below it, has a driven coordinate.
     bool moves = false;
@@ -229,17 +240,17 @@ void PlanarCar::updateSteering(double t) {
 
 void PlanarCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
   mb::jointRetract(mb::JointType::Planar, q.data(), dq.data(), out.data());
-  out.tail<6>() = q.tail<6>() + dq.tail<6>();
+  out.tail(n_ - 3) = q.tail(n_ - 3) + dq.tail(n_ - 3);
 }
 
 void PlanarCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
   mb::jointLocal(mb::JointType::Planar, base.data(), q.data(), out.data());
-  out.tail<6>() = q.tail<6>() - base.tail<6>();
+  out.tail(n_ - 3) = q.tail(n_ - 3) - base.tail(n_ - 3);
 }
 
 void PlanarCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
   mb::jointLocalRate(mb::JointType::Planar, delta.data(), v.data(), out.data());
-  out.tail<6>() = v.tail<6>();
+  out.tail(n_ - 3) = v.tail(n_ - 3);
 }
 
 void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
@@ -262,13 +273,14 @@ integ::EvalStatus PlanarCar::acceptStep(double t, double h, const integ::Vec& q,
     msg.set("non-finite state at t = %.6g s", t);
     return integ::EvalStatus::Fatal;
   }
-  for (int i = 0; i < kCoordinates; ++i)
+  for (int i = 0; i < n_; ++i)
     if (std::abs(v(i)) > limits_.maxVelocity) {
       msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
       return integ::EvalStatus::Fatal;
     }
   const double since = forces_.sinceAccepted(t);
   for (int w = 0; w < 4; ++w) forces_.acceptWheel(w, kinematics_[w], relativeSpin_[w], since, h);
+  if (engineV_ >= 0) forces_.acceptDriveline(v(Engine), relativeSpin_, since);
   forces_.markAccepted(t);
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();
   return integ::EvalStatus::Ok;
@@ -346,6 +358,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
 
   // The wheels: tyres on their contact planes, brakes, drive torques.
   const Vec3 origin(q(X), q(Y), groundZ_);
+  std::array<Vec3, 4> tyreAxis;
   for (int w = 0; w < 4; ++w) {
     const Wheel& W = wheels_[w];
     Vec3 axis = RJ * W.axisY;  // the tyre sees the body's roll and pitch and the carrier's turn over its travel
@@ -368,15 +381,23 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
       Qspin[w] += spinAxis.dot((at - W.centre).cross(F) + M);
     }
     Qspin[w] += W.spinSign * forces_.brakeTorque(w, relativeSpin_[w], h);
+    tyreAxis[w] = axis;
+  }
+  // Drive torques: a powertrain's from its driveline at the crank's and the
+  // wheels' speeds now (the crank's own torque: the engine's less the
+  // clutch's), or as the driver holds them.
+  const double crankTorque = engineV_ >= 0 ? forces_.drivelineTorques(v(Engine), relativeSpin_, h) : 0.0;
+  for (int w = 0; w < 4; ++w) {
     const double drive = forces_.wheels()[w].driveTorque;
     if (drive == 0.0) continue;
+    const Wheel& W = wheels_[w];
     if (spec.driveReaction == DriveReaction::Carrier) {
       Qspin[w] += W.spinSign * drive;
       continue;
     }
-    const Vec3 torque = drive * axis;
+    const Vec3 torque = drive * tyreAxis[w];
     tb += torque.z();
-    Qspin[w] += spinAxis.dot(torque);
+    Qspin[w] += W.spinSign * W.axisY.dot(torque);
     if (spec.driveReaction == DriveReaction::Chassis) ts -= torque;
   }
 
@@ -407,7 +428,15 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   }
   const Mat3 I = RJ * inertia0_ * RJ.transpose();
   const Vec3 fin = sprungMass_ * ac - fs;
-  const Vec3 tin = I * alpha + omega.cross(I * omega) - ts;
+  Vec3 tin = I * alpha + omega.cross(I * omega) - ts;
+  if (engineV_ >= 0) {
+    // The crank's rotor: d/dt of its angular momentum I (x . w_e) x about
+    // the body's x axis, w_e = w + crank rate x.
+    const Vec3 ax = RJ * crankAxis0_;
+    const double spin = ax.dot(omega) + v(Engine), spinRate = ax.dot(alpha) + a(Engine);
+    tin += engineInertia_ * (spinRate * ax + spin * omega.cross(ax));
+    out.F(Engine) = engineInertia_ * spinRate - crankTorque;
+  }
   for (int j = 0; j < 5; ++j) out.F(j) = Jv[j].dot(fin) + Jw[j].dot(tin);
   // The lumped base: its centre of mass accelerates with the base frame.
   const double Ax = a(0) - r * vs, Ay = a(1) + r * u, Sx = baseMoment_.x(), Sy = baseMoment_.y();
@@ -437,9 +466,17 @@ bool PlanarCar::massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) {
   const std::array<Vec3, 5> Jv{kX, kY, kZ.cross(P), kX.cross(rho), e.cross(rho)};
   const std::array<Vec3, 5> Jw{Vec3::Zero(), Vec3::Zero(), kZ, kX, e};
   const Mat3 I = RJ * inertia0_ * RJ.transpose();
-  Fa.setZero(kCoordinates, kCoordinates);
+  Fa.setZero(n_, n_);
   for (int j = 0; j < 5; ++j)
     for (int k = 0; k < 5; ++k) Fa(j, k) = sprungMass_ * Jv[j].dot(Jv[k]) + Jw[j].dot(I * Jw[k]);
+  if (engineV_ >= 0) {
+    const Vec3 ax = RJ * crankAxis0_;
+    Fa(Engine, Engine) = engineInertia_;
+    for (int j = 0; j < 5; ++j) {
+      Fa(Engine, j) = Fa(j, Engine) = engineInertia_ * ax.dot(Jw[j]);
+      for (int k = 0; k < 5; ++k) Fa(j, k) += engineInertia_ * ax.dot(Jw[j]) * ax.dot(Jw[k]);
+    }
+  }
   Fa(0, 0) += baseMass_;
   Fa(1, 1) += baseMass_;
   Fa(0, 2) -= baseMoment_.y();
@@ -469,6 +506,10 @@ void PlanarCar::toMultibody(double t, const integ::Vec& q, const integ::Vec& v, 
   for (int w = 0; w < 4; ++w) {
     qm(wheels_[w].multibodyQ) = q(Spin + w);
     vm(wheels_[w].multibodyV) = v(Spin + w);
+  }
+  if (engineV_ >= 0) {
+    qm(engineQ_) = q(Engine);
+    vm(engineV_) = v(Engine);
   }
   const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
   for (const auto& [iq, iv] : drivenCoordinates_) {
@@ -507,8 +548,8 @@ Vec3 PlanarCar::chassisOrigin(const integ::Vec& q) const {
 void PlanarCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const {
   const mb::Model& m = vehicle_.model;
   const VehicleLayout& L = vehicle_.layout;
-  q.resize(kCoordinates);
-  v.resize(kCoordinates);
+  q.resize(n_);
+  v.resize(n_);
   const int bq = m.bodies[L.base].qIndex, bv = m.bodies[L.base].vIndex;
   const int sq = m.bodies[L.chassis].qIndex, sv = m.bodies[L.chassis].vIndex;
   q.head<3>() = qm.segment<3>(bq);
@@ -518,6 +559,10 @@ void PlanarCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ:
   for (int w = 0; w < 4; ++w) {
     q(Spin + w) = qm(wheels_[w].multibodyQ);
     v(Spin + w) = vm(wheels_[w].multibodyV);
+  }
+  if (engineV_ >= 0) {
+    q(Engine) = qm(engineQ_);
+    v(Engine) = vm(engineV_);
   }
 }
 

@@ -19,14 +19,19 @@
 // planar load transfer and wheel attitude, brakes, drive torques, anti-roll
 // bars, drag and lift.
 //
-// Not carried (the constructor refuses, the multibody planar model runs
-// instead): a powertrain (its engine is one more coordinate on the sprung
-// body), wheels that are not symmetric about their spin axis.
+// A powertrain's engine is one more coordinate: a rotor about the sprung
+// body's x axis (its crank), driven by the engine and clutch torques, whose
+// spin the sprung body feels (its inertia about the crank, its gyroscopic
+// moment).
 //
-// Coordinates: q = (x, y, yaw, roll, pitch, spin FL FR RL RR) as the
-// multibody model's planar, universal and spin joints; v = (forward,
-// sideways in the base frame, yaw rate, roll rate, pitch rate, the spins'
-// joint rates).
+// Not carried (the constructor refuses, the multibody planar model runs
+// instead): wheels that are not symmetric about their spin axis, other
+// bodies on the sprung body.
+//
+// Coordinates: q = (x, y, yaw, roll, pitch, spin FL FR RL RR[, crank]) as
+// the multibody model's planar, universal, spin and crank joints; v =
+// (forward, sideways in the base frame, yaw rate, roll rate, pitch rate, the
+// spins' joint rates[, the crank's rate relative to the body]).
 #pragma once
 
 #include <array>
@@ -45,8 +50,8 @@ namespace bdfcar::vehicle {
 
 class PlanarCar final : public integ::Dae {
  public:
-  static constexpr int kCoordinates = 9;
-  enum Index { X = 0, Y = 1, Yaw = 2, Roll = 3, Pitch = 4, Spin = 5 };  // q; v: forward, sideways, yaw rate, ...
+  static constexpr int kCoordinates = 9;  // without an engine
+  enum Index { X = 0, Y = 1, Yaw = 2, Roll = 3, Pitch = 4, Spin = 5, Engine = 9 };  // q; v: forward, sideways, yaw rate, ...
 
   // planar: a multibody planar model (Vehicle::planar set). Throws
   // mb::ModelError naming what the closed form does not carry.
@@ -64,14 +69,16 @@ class PlanarCar final : public integ::Dae {
   void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
   // A solution point in the multibody model's coordinates, its rack drivers'
   // multipliers (the rack force) from the multibody residual there: view
-  // must be that model with forces() as its force provider.
+  // must be that model with forces() as its force provider; its data holds
+  // that evaluation after.
   integ::SolutionPoint multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view);
   // Wheel w's centre (world) at the last residual evaluation, and the
   // sprung body's frame origin (world) at positions q.
   const Vec3& wheelCentre(int w) const { return kinematics_[w].centre; }
   Vec3 chassisOrigin(const integ::Vec& q) const;
 
-  integ::DaeSizes sizes() const override { return {kCoordinates, kCoordinates, 0}; }
+  int coordinates() const { return n_; }
+  integ::DaeSizes sizes() const override { return {n_, n_, 0}; }
   void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
   void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
@@ -84,7 +91,7 @@ class PlanarCar final : public integ::Dae {
   const std::vector<int>& fastColumns() const override { return fastColumns_; }
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
   bool constraintJacobian(double, const integ::Vec&, integ::Mat& Phi_q) override {
-    Phi_q.resize(0, kCoordinates);  // no constraint: nothing to difference
+    Phi_q.resize(0, n_);  // no constraint: nothing to difference
     return true;
   }
 
@@ -104,6 +111,7 @@ class PlanarCar final : public integ::Dae {
   // The geometry of the step's time (the steered wheels at the rack signal).
   void updateSteering(double t);
   const Vehicle& vehicle_;
+  int n_ = kCoordinates;
   VehicleForces forces_;
   const mb::TimeSignal* rack_ = nullptr;
   mb::StateLimits limits_;
@@ -131,6 +139,9 @@ class PlanarCar final : public integ::Dae {
   // spring's point on the body from the axis point, the carrier's turn per travel.
   std::array<Vec3, 4> cornerArm_, turnPerTravel_;
   Vec3 gravity_;
+  double engineInertia_ = 0;        // kg m^2 about the sprung body's x axis (0: no engine)
+  Vec3 crankAxis0_;                 // that axis in the base frame at zero roll and pitch
+  int engineQ_ = -1, engineV_ = -1;  // the multibody model's crank coordinate
   double groundZ_ = 0;
   std::array<Wheel, 4> wheels_;
   std::vector<mb::SplineGrid> tables_;  // steered wheels over the rack travel: centre (3), y axis (3), spin per travel

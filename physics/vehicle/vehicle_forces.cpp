@@ -250,9 +250,13 @@ double VehicleForces::drivenSpeed(const std::array<double, 4>& spins) const {
 }
 
 void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4>& spins) {
+  d.jointForce(vehicle_.layout.engineV) += drivelineTorques(engineSpeed(d), spins, h);
+}
+
+double VehicleForces::drivelineTorques(double engine, const std::array<double, 4>& spins, double h) {
   const PowertrainSpec& P = *vehicle_.spec.powertrain;
   DrivelineState& s = driveline_;
-  s.engineSpeed = engineSpeed(d);
+  s.engineSpeed = engine;
   s.outputSpeed = drivenSpeed(spins);
   s.engineTorque = engineTorque(P.engine, s.engineSpeed, s.command.throttle);
   // In neutral the clutch turns the gearbox's input shaft alone (its inertia is the engine's).
@@ -260,7 +264,6 @@ void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4
                        ? 0.0
                        : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
                                       s.engineSpeed - s.command.ratio * s.outputSpeed, h);
-  d.jointForce(vehicle_.layout.engineV) += s.engineTorque - s.clutchTorque;
   // The differential: an equal share of the gearbox output for each driven
   // wheel (the torque balance of an open differential), plus the viscous
   // coupling's torque from the faster wheels to the slower.
@@ -268,6 +271,7 @@ void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4
   for (int w : driven_) {
     wheels_[w].driveTorque = share - P.viscousCoupling * (spins[w] - s.outputSpeed);
   }
+  return s.engineTorque - s.clutchTorque;
 }
 
 void VehicleForces::aerodynamics(mb::Data& d) const {
@@ -293,12 +297,9 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
   const double h = sinceAccepted(t);
   for (int w = 0; w < 4; ++w) acceptWheel(w, wheelKinematics(d, w), relativeSpin(d, w), h, hNext);
   if (vehicle_.spec.powertrain) {
-    DrivelineState& s = driveline_;
     std::array<double, 4> spins;
     for (int w = 0; w < 4; ++w) spins[w] = relativeSpin(d, w);
-    s.clutchDeflection = s.command.ratio == 0.0 ? 0.0
-                                                : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
-                                                                          s.clutchDeflection, engineSpeed(d) - s.command.ratio * drivenSpeed(spins), h);
+    acceptDriveline(engineSpeed(d), spins, h);
   }
   markAccepted(t);
 }
@@ -334,6 +335,14 @@ void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double re
   } else {
     c.brakeDeflection = 0;
   }
+}
+
+void VehicleForces::acceptDriveline(double engine, const std::array<double, 4>& spins, double h) {
+  DrivelineState& s = driveline_;
+  s.clutchDeflection = s.command.ratio == 0.0
+                           ? 0.0
+                           : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
+                                                     s.clutchDeflection, engine - s.command.ratio * drivenSpeed(spins), h);
 }
 
 void VehicleForces::markAccepted(double t) {

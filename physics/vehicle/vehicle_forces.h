@@ -102,6 +102,13 @@ class VehicleForces final : public mb::ForceProvider {
   // slips, brake spring, the accepted tyre force) and casts its next contact
   // plane, hNext ahead; then markAccepted(t) once for the four.
   void acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext);
+  // A powertrain's driveline at the crank's speed relative to the chassis
+  // and the wheels' spins relative to their carriers: the crank's joint
+  // torque (the engine's less the clutch's); the driven wheels' drive
+  // torques go into their WheelContact. acceptDriveline advances the clutch
+  // over an accepted step of length h.
+  double drivelineTorques(double engineSpeed, const std::array<double, 4>& spins, double h);
+  void acceptDriveline(double engineSpeed, const std::array<double, 4>& spins, double h);
   void markAccepted(double t);
   double sinceAccepted(double t) const { return std::max(0.0, t - lastAccepted_); }
   // A planar model's load from its roll centres and pitch axis: the share of

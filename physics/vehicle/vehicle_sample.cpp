@@ -11,16 +11,18 @@
 namespace bdfcar::vehicle {
 
 VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces,
-                            const integ::SolutionPoint& s) {
+                            const integ::SolutionPoint& s, bool evaluated) {
   const mb::Model& m = v.model;
   mb::Data& d = dae.data();
-  mb::sampleDrivers(m, d, s.t);
-  mb::updatePositions(m, s.q, d);
-  mb::updateVelocities(m, s.q, s.v, d);
-  mb::updateAccelerations(m, s.a, d);
-  mb::clearForces(m, d);
-  d.jointForce.setZero();
-  forces.apply(m, d, s.t);  // tyre outputs at this state (transient slips as accepted)
+  if (!evaluated) {
+    mb::sampleDrivers(m, d, s.t);
+    mb::updatePositions(m, s.q, d);
+    mb::updateVelocities(m, s.q, s.v, d);
+    mb::updateAccelerations(m, s.a, d);
+    mb::clearForces(m, d);
+    d.jointForce.setZero();
+    forces.apply(m, d, s.t);  // tyre outputs at this state (transient slips as accepted)
+  }
 
   VehicleSample out;
   out.t = s.t;

@@ -39,9 +39,11 @@ struct VehicleSample {
   std::array<double, 4> springForce{}, damperForce{}, stopForce{};  // N, the corner's suspension, + compressing
 };
 
-// Kinematics and forces of the accepted solution point.
+// Kinematics and forces of the accepted solution point. evaluated: dae's
+// data already holds them (a residual evaluation at s, e.g. the closed-form
+// planar model's multibodyPoint), not evaluated again.
 VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForces& forces,
-                            const integ::SolutionPoint& s);
+                            const integ::SolutionPoint& s, bool evaluated = false);
 
 // World poses and suspension segments for drawing (uses dae.data() as left by sampleVehicle).
 VehicleView viewVehicle(const Vehicle& v, const mb::MultibodyDae& dae, const VehicleForces& forces, double t);
