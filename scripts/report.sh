@@ -158,6 +158,13 @@ bench_table() {
     join <(selfIr "$tmp/cg.sedan.planar.6" | sort) <(selfIr "$tmp/cg.sedan.planar.1" | sort) |
       awk '{ d = ($2 - $3) / 500; tot += d; row[$1] = d } END { for (k in row) if (row[k] > 0.02 * tot) printf "%d %s %.1f\n", row[k], k, 100 * row[k] / tot }' |
       sort -rn | awk '{ printf "| %s | %d | %s %% |\n", $2, $1, $3 }'
+    echo
+    echo "The planar rung beside LFDM's 18-DOF model (a two-track model with roll, TMeasy tyres,"
+    echo "half-implicit; uwsbel/low-fidelity-dynamic-models), a lane change at 80 km/h with a 10 ms step,"
+    echo "in one run on this machine: \`bash scripts/lfdm_side_by_side.sh LFDM_SOURCE_DIR\` (LFDM_DIR for the"
+    echo "report; it compiles LFDM from a tree you give it and fetches nothing):"
+    echo
+    bash "$root/scripts/lfdm_side_by_side.sh" "${LFDM_DIR:-}" 2>&1 | sed 's/^/    /'
   else
     echo "(skipped: valgrind is not installed)"
   fi
