@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "terrain/bullet/bullet_terrain.h"
+#include "terrain/bullet/bullet_shapes.h"
 #include "terrain/road_surface.h"
 #include "terrain/terrain.h"
 #include "terrain/terrain_file.h"
@@ -301,6 +302,59 @@ TEST(BulletTerrain, RaysThatMissReportNoHit) {
 
 // ---------------------------------------------------------------------------
 // Generated roads against their analytic shapes.
+
+// A mesh's rays straight down go through its plan-view grid: against
+// Bullet's tree walk (a second algorithm), bit for bit, on a bumpy mesh with
+// a step, a sliver, two layers (a deck over the road) and shared edges and
+// vertices, where ties fall to the lowest triangle index whatever the order.
+TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  TerrainData d;
+  d.kind = TerrainKind::Mesh;
+  const int n = 40;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) d.vertices.emplace_back(0.5 * i, 0.5 * j, 0.05 * std::sin(0.7 * i) * std::cos(0.4 * j) + (i > 20 ? 0.12 : 0.0));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      d.triangles.push_back({a, a + 1, a + n + 2});
+      d.triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  // A bridge deck 3 m above part of the road, and a sliver across it all.
+  const int b = static_cast<int>(d.vertices.size());
+  for (const auto& [x, y] : {std::pair{4.0, 4.0}, {12.0, 4.0}, {12.0, 6.0}, {4.0, 6.0}}) d.vertices.emplace_back(x, y, 3.0);
+  d.triangles.push_back({b, b + 1, b + 2});
+  d.triangles.push_back({b, b + 2, b + 3});
+  const int s = static_cast<int>(d.vertices.size());
+  d.vertices.emplace_back(0.1, 10.0, 0.5);
+  d.vertices.emplace_back(19.9, 10.02, 0.5);
+  d.vertices.emplace_back(19.9, 10.0, 0.6);
+  d.triangles.push_back({s, s + 1, s + 2});
+  const std::unique_ptr<Terrain> grid = makeMeshTerrain(d), tree = makeMeshTerrain(d, false);
+  int hits = 0;
+  for (int k = 0; k < 20000; ++k) {
+    // On grid lines and vertices as often as between them (the ties).
+    double x = -1.0 + 22.0 * u(rng), y = -1.0 + 22.0 * u(rng);
+    if (k % 3 == 0) x = 0.5 * std::round(2 * x);
+    if (k % 5 == 0) y = 0.5 * std::round(2 * y);
+    const Eigen::Vector3d from(x, y, k % 2 ? 5.0 : 1.0);
+    const Eigen::Vector3d down(0, 0, -1);
+    const Hit a = grid->castRay(from, down, 8.0), e = tree->castRay(from, down, 8.0);
+    ASSERT_EQ(a.hit, e.hit) << x << ", " << y;
+    if (!a.hit) continue;
+    ++hits;
+    ASSERT_EQ(a.distance, e.distance) << x << ", " << y;
+    ASSERT_EQ(a.point, e.point) << x << ", " << y;
+    ASSERT_EQ(a.normal, e.normal) << x << ", " << y;
+    // Over the deck from above it: the deck; from under it: the road.
+    if (x > 4.1 && x < 11.9 && y > 4.1 && y < 5.9) {
+      if (from.z() > 3.0) EXPECT_EQ(a.point.z(), 3.0) << x << ", " << y;
+      else EXPECT_LT(a.point.z(), 0.5) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(hits, 15000);
+}
 
 TEST(RoadSurface, RampHeightAndNormalMatchAnalytic) {
   const double a = 8.0 * std::numbers::pi / 180.0, top = 0.5, foot = 10.0;

@@ -9,8 +9,10 @@
 
 namespace bdfcar::terrain {
 
-// A bounding-volume tree over data.vertices / data.triangles.
-std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data);
+// A bounding-volume tree over data.vertices / data.triangles, and the plan
+// grid rays straight down go through (planGrid = false: the tree for every
+// ray, the grid's reference in tests/test_terrain.cpp).
+std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data, bool planGrid = true);
 
 // Bullet's heightfield over data.heights.
 std::unique_ptr<Terrain> makeHeightfieldTerrain(const TerrainData& data);

@@ -1,8 +1,12 @@
 // Triangle-mesh terrain: Bullet's bounding-volume tree, queried shape-level
-// (no collision world, no broadphase, nothing allocated per ray).
+// (no collision world, no broadphase, nothing allocated per ray). Rays
+// straight down, what every tyre casts every step, go through a grid over
+// the mesh's plan view instead (PlanGrid below): the same triangle test on
+// the triangles under the ray, a few instead of a tree walk.
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -13,9 +17,91 @@ namespace bdfcar::terrain {
 
 namespace {
 
+// The triangles whose plan-view box covers each cell of a uniform grid, in
+// triangle order. A ray straight down crosses only triangles whose plan view
+// holds its point (to the hit test's edge tolerance, which the boxes are
+// grown by), so testing the cell's triangles finds what the tree walk
+// finds, with the same test and the same tie rule (NearestTriangleHit: the
+// lowest triangle index): the same hit, bit for bit (tests/test_terrain.cpp).
+// Empty where it would not pay: a mesh whose triangles span many cells each
+// (a few large faces, long slivers) keeps the tree.
+class PlanGrid {
+ public:
+  explicit PlanGrid(const TerrainData& data) {
+    const size_t n = data.triangles.size();
+    if (n < 64) return;  // the tree's walk is short
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, size = 0;
+    for (const auto& t : data.triangles) {
+      double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
+      for (int k : t) {
+        const Eigen::Vector3d& v = data.vertices[k];
+        lx = std::min(lx, v.x()), hx = std::max(hx, v.x()), ly = std::min(ly, v.y()), hy = std::max(hy, v.y());
+      }
+      x0 = std::min(x0, lx), x1 = std::max(x1, hx), y0 = std::min(y0, ly), y1 = std::max(y1, hy);
+      size += std::max(hx - lx, hy - ly);
+    }
+    // Cells about as large as the triangles, at most kMaxCells of them.
+    const double extent = std::max(x1 - x0, y1 - y0);
+    cell_ = std::max(size / static_cast<double>(n), extent / 4096.0);
+    margin_ = 1e-6 + 1e-6 * extent;  // beyond the edge tolerance's reach (1e-9 of a triangle)
+    x0_ = x0 - margin_;
+    y0_ = y0 - margin_;
+    nx_ = static_cast<int>((x1 - x0 + 2 * margin_) / cell_) + 1;
+    ny_ = static_cast<int>((y1 - y0 + 2 * margin_) / cell_) + 1;
+    if (!(cell_ > 0) || static_cast<double>(nx_) * ny_ > kMaxCells) {
+      clear();
+      return;
+    }
+    std::vector<int> count(static_cast<size_t>(nx_) * ny_ + 1, 0);
+    auto forCells = [&](const std::array<int, 3>& t, auto&& f) {
+      double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
+      for (int k : t) {
+        const Eigen::Vector3d& v = data.vertices[k];
+        lx = std::min(lx, v.x()), hx = std::max(hx, v.x()), ly = std::min(ly, v.y()), hy = std::max(hy, v.y());
+      }
+      const int i0 = column(lx - margin_), i1 = column(hx + margin_), j0 = row(ly - margin_), j1 = row(hy + margin_);
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) f(static_cast<size_t>(j) * nx_ + i);
+    };
+    size_t entries = 0;
+    for (const auto& t : data.triangles) forCells(t, [&](size_t c) { ++count[c + 1], ++entries; });
+    if (entries > 16 * n) {
+      clear();
+      return;
+    }
+    start_.resize(count.size());
+    for (size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    start_ = count;
+    triangles_.resize(entries);
+    for (size_t k = 0; k < n; ++k) forCells(data.triangles[k], [&](size_t c) { triangles_[count[c]++] = static_cast<int>(k); });
+  }
+  bool empty() const { return start_.empty(); }
+  // The triangles under (x, y) (none outside the grid).
+  template <class F>
+  void forEachAt(double x, double y, F&& f) const {
+    if (!(x >= x0_ && y >= y0_)) return;
+    const double i = (x - x0_) / cell_, j = (y - y0_) / cell_;
+    if (!(i < nx_ && j < ny_)) return;
+    const size_t c = static_cast<size_t>(j) * nx_ + static_cast<size_t>(i);
+    for (int k = start_[c]; k < start_[c + 1]; ++k) f(triangles_[k]);
+  }
+
+ private:
+  static constexpr double kMaxCells = 1 << 22;
+  int column(double x) const { return std::clamp(static_cast<int>((x - x0_) / cell_), 0, nx_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>((y - y0_) / cell_), 0, ny_ - 1); }
+  void clear() {
+    start_.clear();
+    triangles_.clear();
+  }
+  double x0_ = 0, y0_ = 0, cell_ = 1, margin_ = 0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_, triangles_;
+};
+
 class MeshTerrain final : public Terrain {
  public:
-  explicit MeshTerrain(const TerrainData& data);
+  MeshTerrain(const TerrainData& data, bool planGrid);
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
   bool surfacesLevelOver(const LevelQuery& q) const override;
 
@@ -25,11 +111,13 @@ class MeshTerrain final : public Terrain {
   std::vector<int> indices_;           // 3 per triangle
   std::unique_ptr<btTriangleIndexVertexArray> arrays_;
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
+  PlanGrid grid_;
   double friction_;
 };
 
 // Copies the mesh into Bullet's layout and builds the quantized tree once.
-MeshTerrain::MeshTerrain(const TerrainData& data) : friction_(data.friction) {
+MeshTerrain::MeshTerrain(const TerrainData& data, bool planGrid)
+    : grid_(planGrid ? data : TerrainData{}), friction_(data.friction) {
   coordinates_.reserve(3 * data.vertices.size());
   for (const Eigen::Vector3d& v : data.vertices) coordinates_.insert(coordinates_.end(), {v.x(), v.y(), v.z()});
   indices_.reserve(3 * data.triangles.size());
@@ -42,8 +130,19 @@ MeshTerrain::MeshTerrain(const TerrainData& data) : friction_(data.friction) {
 
 // Nearest triangle along the segment, through the tree.
 Hit MeshTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const {
+  const bool down = direction.x() == 0.0 && direction.y() == 0.0 && direction.z() < 0.0;
   return castThroughShape(from, direction, maxDistance, Eigen::Vector3d::Zero(), friction_,
-                          [this](NearestTriangleHit& nearest, const btVector3& a, const btVector3& b) {
+                          [this, down](NearestTriangleHit& nearest, const btVector3& a, const btVector3& b) {
+                            if (down && !grid_.empty()) {
+                              grid_.forEachAt(a.x(), a.y(), [&](int k) {
+                                const int* t = &indices_[3 * static_cast<size_t>(k)];
+                                btVector3 v[3];
+                                for (int c = 0; c < 3; ++c)
+                                  v[c] = btVector3(coordinates_[3 * t[c]], coordinates_[3 * t[c] + 1], coordinates_[3 * t[c] + 2]);
+                                nearest.processTriangle(v, 0, k);
+                              });
+                              return;
+                            }
                             // performRaycast is not const in Bullet 3.24 but only reads the tree
                             // and the arrays, so concurrent queries on one terrain are safe.
                             shape_->performRaycast(&nearest, a, b);
@@ -85,6 +184,8 @@ bool MeshTerrain::surfacesLevelOver(const LevelQuery& q) const {
 }  // namespace
 
 // The tree over checked mesh data.
-std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data) { return std::make_unique<MeshTerrain>(data); }
+std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data, bool planGrid) {
+  return std::make_unique<MeshTerrain>(data, planGrid);
+}
 
 }  // namespace bdfcar::terrain

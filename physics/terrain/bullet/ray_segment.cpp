@@ -32,8 +32,9 @@ NearestTriangleHit::NearestTriangleHit(const btVector3& from, const btVector3& t
 
 // Solves from + f delta = v0 + u e1 + v e2 (Moller & Trumbore 1997) and keeps
 // the smallest f in [0, 1] with u, v, 1 - u - v >= -kEdge; on a tie the
-// first triangle reported stays, so results follow Bullet's fixed walk order.
-void NearestTriangleHit::processTriangle(btVector3* t, int, int) {
+// lowest triangle index, so the result does not depend on the order the
+// triangles come in (Bullet's tree walk, the mesh's plan-view grid).
+void NearestTriangleHit::processTriangle(btVector3* t, int, int index) {
   const btVector3 e1 = t[1] - t[0], e2 = t[2] - t[0];
   const btVector3 n = e1.cross(e2);
   if (n.length2() == 0.0) return;  // degenerate triangle
@@ -47,10 +48,11 @@ void NearestTriangleHit::processTriangle(btVector3* t, int, int) {
   const btScalar v = delta_.dot(q) / det;
   if (v < -kEdge || u + v > 1.0 + kEdge) return;
   const btScalar f = e2.dot(q) / det;
-  if (!(f >= 0.0 && f <= 1.0) || (hit && f >= fraction)) return;
+  if (!(f >= 0.0 && f <= 1.0) || (hit && (f > fraction || (f == fraction && index >= triangle)))) return;
   hit = true;
   fraction = f;
   normal = n;
+  triangle = index;
 }
 
 // Point and distance from the hit fraction; the normal turned to point up

@@ -35,6 +35,7 @@ class NearestTriangleHit final : public btTriangleCallback {
   bool hit = false;
   btScalar fraction = 1.0;  // of the segment, at the nearest hit
   btVector3 normal{0, 0, 1};  // of the nearest triangle, by its winding, not unit
+  int triangle = -1;          // its index
 
  private:
   btVector3 from_, delta_;
