@@ -202,7 +202,13 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
 
 void PlanarCar::updateSteering(double t) {
   if (t == steeringTime_) return;
-  const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  // The rack's acceleration as the step sees it: its rate's change over the
+  // step, so that a jump of the rate (a steering signal's kink: an impulse
+  // in the acceleration) moves the steering's inertia as the multibody
+  // form's driven coordinates do, instead of being lost between two samples.
+  const double h = forces_.sinceAccepted(t);
+  if (rack_ && h > 0) rack.accel = (rack.rate - rack_->at(t - h).rate) / h;
   steeringTime_ = t;
   // A rack held where it was (a straight, a steady turn) moves nothing.
   if (rack.value == rackNow_.value && rack.rate == rackNow_.rate && rack.accel == rackNow_.accel && steeringValid_) return;
