@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "portable_math.h"
 #include "terrain/bullet/bullet_shapes.h"
 #include "terrain/bullet/bullet_terrain.h"
 
@@ -26,8 +27,15 @@ struct PlacedPiece {
   std::unique_ptr<Terrain> terrain;
   Eigen::Vector3d lo, hi;  // world bounding box, m
   Eigen::Vector2d footLo, footHi;  // extent in x and y in its own frame, m
+  // The heading's cosine and sine, once (GroundPiece's transforms take them
+  // at every call: four times a ray); the same arithmetic as its own.
+  double c = 1, s = 0;
+  Eigen::Vector3d directionToLocal(const Eigen::Vector3d& v) const { return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()}; }
+  Eigen::Vector3d directionToWorld(const Eigen::Vector3d& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()}; }
+  Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const { return directionToLocal(world - placement.at); }
+  Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const { return directionToWorld(local) + placement.at; }
   bool covers(const Eigen::Vector3d& world) const {
-    const Eigen::Vector2d q = placement.toLocal(world).head<2>();
+    const Eigen::Vector2d q = toLocal(world).head<2>();
     return (q.array() >= footLo.array()).all() && (q.array() <= footHi.array()).all();
   }
 };
@@ -73,6 +81,8 @@ GroundTerrain::GroundTerrain(const TerrainData& data) {
   for (const GroundPiece& p : data.pieces) {
     PlacedPiece placed;
     placed.placement = GroundPiece{p.name, TerrainData{}, p.at, p.heading};
+    placed.c = pm::cos(p.heading);
+    placed.s = pm::sin(p.heading);
     placed.terrain = makeTerrain(p.terrain);
     placed.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     placed.hi = -placed.lo;
@@ -98,11 +108,10 @@ Hit GroundTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& d
   Hit best;
   for (const PlacedPiece& p : pieces_) {
     if ((hi.array() < p.lo.array()).any() || (lo.array() > p.hi.array()).any()) continue;
-    const GroundPiece& at = p.placement;
-    Hit h = p.terrain->castRay(at.toLocal(from), at.directionToLocal(direction), maxDistance);
+    Hit h = p.terrain->castRay(p.toLocal(from), p.directionToLocal(direction), maxDistance);
     if (!h.hit || (best.hit && h.distance > best.distance + kTie)) continue;
-    h.point = at.toWorld(h.point);
-    h.normal = at.directionToWorld(h.normal);
+    h.point = p.toWorld(h.point);
+    h.normal = p.directionToWorld(h.normal);
     best = h;
   }
   if (!best.hit) return plane;
@@ -125,7 +134,7 @@ bool GroundTerrain::levelOver(const LevelQuery& q) const {
     LevelQuery local = q;
     Eigen::Vector2d a = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), b = -a;
     for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector3d c = p.placement.toLocal(Eigen::Vector3d(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), 0.0));
+      const Eigen::Vector3d c = p.toLocal(Eigen::Vector3d(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), 0.0));
       a = a.cwiseMin(c.head<2>());
       b = b.cwiseMax(c.head<2>());
     }
