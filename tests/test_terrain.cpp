@@ -332,6 +332,8 @@ TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
   d.vertices.emplace_back(19.9, 10.0, 0.6);
   d.triangles.push_back({s, s + 1, s + 2});
   const std::unique_ptr<Terrain> grid = makeMeshTerrain(d), tree = makeMeshTerrain(d, false);
+  ASSERT_TRUE(hasPlanGrid(*grid));
+  ASSERT_FALSE(hasPlanGrid(*tree));
   int hits = 0;
   for (int k = 0; k < 20000; ++k) {
     // On grid lines and vertices as often as between them (the ties).

@@ -49,14 +49,10 @@ void checkGround(const TerrainData& data) {
 
 }  // namespace
 
-Eigen::Vector3d GroundPiece::directionToWorld(const Eigen::Vector3d& v) const {
-  const double c = pm::cos(heading), s = pm::sin(heading);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()};
-}
-Eigen::Vector3d GroundPiece::directionToLocal(const Eigen::Vector3d& v) const {
-  const double c = pm::cos(heading), s = pm::sin(heading);
-  return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()};
-}
+HeadingTurn HeadingTurn::of(double heading) { return {pm::cos(heading), pm::sin(heading)}; }
+
+Eigen::Vector3d GroundPiece::directionToWorld(const Eigen::Vector3d& v) const { return HeadingTurn::of(heading).toWorld(v); }
+Eigen::Vector3d GroundPiece::directionToLocal(const Eigen::Vector3d& v) const { return HeadingTurn::of(heading).toLocal(v); }
 Eigen::Vector3d GroundPiece::toWorld(const Eigen::Vector3d& local) const { return directionToWorld(local) + at; }
 Eigen::Vector3d GroundPiece::toLocal(const Eigen::Vector3d& world) const { return directionToLocal(world - at); }
 

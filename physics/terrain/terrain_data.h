@@ -70,6 +70,16 @@ struct TerrainData {
   std::vector<GroundPiece> pieces;
 };
 
+// A turn about z (a heading), its cosine and sine taken once: vectors of the
+// turned frame to the unturned one and back. Ground pieces, the ground's
+// rays, the planar car's base frame.
+struct HeadingTurn {
+  double c = 1, s = 0;
+  static HeadingTurn of(double heading);
+  Eigen::Vector3d toWorld(const Eigen::Vector3d& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()}; }
+  Eigen::Vector3d toLocal(const Eigen::Vector3d& v) const { return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()}; }
+};
+
 // A terrain placed on a ground: world = R_z(heading) local + at. A ray
 // reaching both the ground's plane and a piece, or two pieces, at the same
 // distance takes the piece listed last (ground_terrain.cpp): a flat piece on

@@ -8,6 +8,7 @@
 #include "multibody/kinematics.h"
 #include "multibody/model_error.h"
 #include "portable_math.h"
+#include "terrain/terrain_data.h"
 
 namespace bdfcar::vehicle {
 
@@ -20,14 +21,8 @@ const Vec3 kX = Vec3::UnitX(), kY = Vec3::UnitY(), kZ = Vec3::UnitZ();
 // A body's rotational inertia with its rotor's (Body::rotorInertia), body axes.
 Mat3 fullInertia(const mb::Body& b) { return b.inertia + b.rotorInertia * b.rotorAxis * b.rotorAxis.transpose(); }
 
-// The base frame's yaw: base -> world and back.
-struct Heading {
-  double c = 1, s = 0;
-  Vec3 toWorld(const Vec3& x) const { return {c * x.x() - s * x.y(), s * x.x() + c * x.y(), x.z()}; }
-  Vec3 toBase(const Vec3& x) const { return {c * x.x() + s * x.y(), -s * x.x() + c * x.y(), x.z()}; }
-};
-
-Heading headingOf(double angle) {
+// The base frame's yaw: base -> world (toWorld) and back (toLocal).
+terrain::HeadingTurn headingOf(double angle) {
   const pm::SinCos r = pm::sincos(angle);
   return {r.c, r.s};
 }
@@ -263,7 +258,7 @@ void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();  // the rack's segment may have changed at a tick
   if (!forces_.needsBeginStep()) return;
   updateSteering(t);
-  const Heading yaw = headingOf(q(Yaw));
+  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
   const Vec3 origin(q(X), q(Y), groundZ_);
   std::array<Vec3, 4> centres, axes;
   for (int w = 0; w < 4; ++w) {
@@ -302,7 +297,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   const double h = forces_.sinceAccepted(t);
   const PlanarLoads& PL = *vehicle_.planar;
   const VehicleSpec& spec = vehicle_.spec;
-  const Heading yaw = headingOf(q(Yaw));
+  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
   const Mat3 RJ = rollPitch(q(Roll), q(Pitch));
   const bool lift = spec.liftAreaFront != 0 || spec.liftAreaRear != 0;
   Mat3 Rs;  // the sprung body's axes in the base frame (what the bars and the lift need)
@@ -311,7 +306,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
   const double u = v(0), vs = v(1), r = v(2), rollRate = v(3), pitchRate = v(4);
   const Vec3 rho = RJ * comArm0_, P = axisPoint_ + rho;
   const Vec3 omegaRel = rollRate * kX + pitchRate * e, omega = r * kZ + omegaRel;
-  const Vec3 g = yaw.toBase(gravity_);
+  const Vec3 g = yaw.toLocal(gravity_);
   auto sprungPoint = [&](const Vec3& body) -> Vec3 { return axisPoint_ + Rs * (body - jointInBody_); };
 
   // Applied forces: on the sprung body as a wrench about its centre of mass,
@@ -381,7 +376,7 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
     const tyre::TyreOutput& tyre = forces_.evaluateTyre(w, k, h, load[w]);
     const Vec3 spinAxis = W.spinSign * W.axisY;  // the spin joint's
     if (tyre.inContact) {
-      const Vec3 F = yaw.toBase(tyre.force), M = yaw.toBase(tyre.moment), at = yaw.toBase(tyre.point - origin);
+      const Vec3 F = yaw.toLocal(tyre.force), M = yaw.toLocal(tyre.moment), at = yaw.toLocal(tyre.point - origin);
       onBase(at, F);
       tb += M.z();
       Qspin[w] += spinAxis.dot((at - W.centre).cross(F) + M);
@@ -546,7 +541,7 @@ integ::SolutionPoint PlanarCar::multibodyPoint(const integ::SolutionPoint& p, mb
 }
 
 Vec3 PlanarCar::chassisOrigin(const integ::Vec& q) const {
-  const Heading yaw = headingOf(q(Yaw));
+  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
   const Vec3 p = axisPoint_ - rollPitch(q(Roll), q(Pitch)) * sprungRest_ * jointInBody_;
   return Vec3(q(X), q(Y), groundZ_) + yaw.toWorld(p);
 }

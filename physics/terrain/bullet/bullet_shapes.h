@@ -13,6 +13,9 @@ namespace bdfcar::terrain {
 // grid rays straight down go through (planGrid = false: the tree for every
 // ray, the grid's reference in tests/test_terrain.cpp).
 std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data, bool planGrid = true);
+// Whether t is such a mesh with its plan grid built (a mesh of few
+// triangles, or one whose triangles span many cells each, keeps the tree).
+bool hasPlanGrid(const Terrain& t);
 
 // Bullet's heightfield over data.heights.
 std::unique_ptr<Terrain> makeHeightfieldTerrain(const TerrainData& data);

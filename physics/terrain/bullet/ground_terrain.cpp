@@ -9,7 +9,6 @@
 #include <limits>
 #include <vector>
 
-#include "portable_math.h"
 #include "terrain/bullet/bullet_shapes.h"
 #include "terrain/bullet/bullet_terrain.h"
 
@@ -27,13 +26,13 @@ struct PlacedPiece {
   std::unique_ptr<Terrain> terrain;
   Eigen::Vector3d lo, hi;  // world bounding box, m
   Eigen::Vector2d footLo, footHi;  // extent in x and y in its own frame, m
-  // The heading's cosine and sine, once (GroundPiece's transforms take them
-  // at every call: four times a ray); the same arithmetic as its own.
-  double c = 1, s = 0;
-  Eigen::Vector3d directionToLocal(const Eigen::Vector3d& v) const { return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()}; }
-  Eigen::Vector3d directionToWorld(const Eigen::Vector3d& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()}; }
-  Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const { return directionToLocal(world - placement.at); }
-  Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const { return directionToWorld(local) + placement.at; }
+  // The heading's turn, once (GroundPiece's transforms take it at every
+  // call: four times a ray).
+  HeadingTurn turn;
+  Eigen::Vector3d directionToLocal(const Eigen::Vector3d& v) const { return turn.toLocal(v); }
+  Eigen::Vector3d directionToWorld(const Eigen::Vector3d& v) const { return turn.toWorld(v); }
+  Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const { return turn.toLocal(world - placement.at); }
+  Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const { return turn.toWorld(local) + placement.at; }
   bool covers(const Eigen::Vector3d& world) const {
     const Eigen::Vector2d q = toLocal(world).head<2>();
     return (q.array() >= footLo.array()).all() && (q.array() <= footHi.array()).all();
@@ -81,8 +80,7 @@ GroundTerrain::GroundTerrain(const TerrainData& data) {
   for (const GroundPiece& p : data.pieces) {
     PlacedPiece placed;
     placed.placement = GroundPiece{p.name, TerrainData{}, p.at, p.heading};
-    placed.c = pm::cos(p.heading);
-    placed.s = pm::sin(p.heading);
+    placed.turn = HeadingTurn::of(p.heading);
     placed.terrain = makeTerrain(p.terrain);
     placed.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     placed.hi = -placed.lo;

@@ -104,6 +104,7 @@ class MeshTerrain final : public Terrain {
   MeshTerrain(const TerrainData& data, bool planGrid);
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
   bool surfacesLevelOver(const LevelQuery& q) const override;
+  bool planGrid() const { return !grid_.empty(); }
 
  private:
   // Bullet keeps pointers into these two arrays: they outlive the shapes below.
@@ -184,6 +185,11 @@ bool MeshTerrain::surfacesLevelOver(const LevelQuery& q) const {
 }  // namespace
 
 // The tree over checked mesh data.
+bool hasPlanGrid(const Terrain& t) {
+  const auto* mesh = dynamic_cast<const MeshTerrain*>(&t);
+  return mesh && mesh->planGrid();
+}
+
 std::unique_ptr<Terrain> makeMeshTerrain(const TerrainData& data, bool planGrid) {
   return std::make_unique<MeshTerrain>(data, planGrid);
 }
