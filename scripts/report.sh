@@ -86,7 +86,7 @@ bench_table() {
     # scan of the road ahead and its switches.
     declare -A linkageIr
     for run in "paper linkage <=70000" "sedan linkage <=100000" "paper kinematic -" "sedan kinematic <=25000" \
-               "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" "sedan auto -"; do
+               "sedan kinematic -  fidelity.kinematic_equations=multibody" "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" "sedan auto -"; do
       set -- $run
       v=$1 f=$2 target=$3 extra=()
       [ -n "${4:-}" ] && extra=(--set "$4")
@@ -143,21 +143,33 @@ bench_table() {
     echo "the eq. 3.8 matrix and with the Jacobian blocks; evaluateJacobian (finite differences of the"
     echo "residual, every 200 steps) is amortised; the rest of newton is the residual."
     echo
-    echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
-    echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
-    echo "residual (two per step), the tyres, and the BDF step's own vector work and back-substitution,"
-    echo "which the rungs share: what is left to cut for the 6k target."
-    echo
-    echo "| function | instructions per step | share |"
-    echo "|---|---|---|"
     selfIr() {
       callgrind_annotate --auto=no --threshold=100 "$1" 2> /dev/null | sed 's/(anonymous namespace)/{anonymous}/g' |
         sed -nE 's/^ *([0-9,]+) +\([ 0-9.%]+\) +[^:]*:([^ (<]*).*/\2 \1/p' | tr -d ',' |
         awk '{ a[$1] += $2 } END { for (k in a) print k, a[k] }'
     }
-    join <(selfIr "$tmp/cg.sedan.planar.6" | sort) <(selfIr "$tmp/cg.sedan.planar.1" | sort) |
-      awk '{ d = ($2 - $3) / 500; tot += d; row[$1] = d } END { for (k in row) if (row[k] > 0.02 * tot) printf "%d %s %.1f\n", row[k], k, 100 * row[k] / tot }' |
-      sort -rn | awk '{ printf "| %s | %d | %s %% |\n", $2, $1, $3 }'
+    # A closed-form rung's self instructions per step, the functions above 2 %.
+    profileTable() {
+      echo "| function | instructions per step | share |"
+      echo "|---|---|---|"
+      join <(selfIr "$tmp/cg.sedan.$1.6" | sort) <(selfIr "$tmp/cg.sedan.$1.1" | sort) |
+        awk '{ d = ($2 - $3) / 500; tot += d; row[$1] = d } END { for (k in row) if (row[k] > 0.02 * tot) printf "%d %s %.1f\n", row[k], k, 100 * row[k] / tot }' |
+        sort -rn | awk '{ printf "| %s | %d | %s %% |\n", $2, $1, $3 }'
+    }
+    echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
+    echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
+    echo "residual (two per step), the tyres, and the BDF step's own vector work and back-substitution,"
+    echo "which the rungs share: what is left to cut for the 6k target."
+    echo
+    profileTable planar
+    echo
+    echo "Where the kinematic rung's step goes (sedan.toml \`--fidelity kinematic\`, its closed form,"
+    echo "physics/vehicle/kinematic_car.h; the same measure): the corners' tables (SplineGrid::eval: the"
+    echo "steered corners' are bicubic in travel and rack, six pose components and the springs' lengths"
+    echo "with their first and second derivatives), the corners' motion from them (cornerMotion) and the"
+    echo "residual's own algebra, for each of the step's three residuals."
+    echo
+    profileTable kinematic
     echo
     echo "The planar rung beside LFDM's 18-DOF model (a two-track model with roll, TMeasy tyres,"
     echo "half-implicit; uwsbel/low-fidelity-dynamic-models), a lane change at 80 km/h with a 10 ms step,"

@@ -40,7 +40,8 @@ TEST(RungMapping, KeepsWhatBothModelsHave) {
   if (sim.rung() == 1) sim.switchRung(0);
   const vehicle::Vehicle& kin = sim.world().vehicle;
   const vehicle::Vehicle& planar = *sim.world().planar;
-  const Eigen::VectorXd qk = sim.integrator().current().q, vk = sim.integrator().current().v;
+  const integ::SolutionPoint now = sim.multibodyPoint();  // the kinematic model's coordinates
+  const Eigen::VectorXd qk = now.q, vk = now.v;
   Eigen::VectorXd qp, vp, qk2, vk2, qp2, vp2;
   vehicle::kinematicToPlanar(kin, planar, qk, vk, qp, vp);
   vehicle::planarToKinematic(planar, kin, qp, vp, qk2, vk2);

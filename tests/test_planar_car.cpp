@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "integrator/bdf.h"
-#include "integrator/forward_dynamics.h"
+#include "closed_form_pair.h"
 #include "multibody/model_error.h"
 #include "terrain/terrain.h"
 #include "vehicle/planar_car.h"
@@ -20,23 +20,6 @@ namespace bdfcar {
 namespace {
 
 std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
-
-// The rack held, or moved smoothly to a travel over a second (a J-turn's steering).
-struct Rack final : mb::TimeSignal {
-  double travel = 0, start = -1;  // start < 0: held at travel
-  double rate = 0, accel = 0;
-  bool kinked = false;  // a ramp: the rate jumps at its ends
-  mb::SignalValue at(double t) const override {
-    if (start < 0) return {travel, rate, accel};
-    if (kinked) {
-      const double s = std::clamp(t - start, 0.0, 1.0);
-      return {travel * s, s > 0 && s < 1 ? travel : 0.0, 0.0};
-    }
-    // A smooth step over a second (C2: 10 s^3 - 15 s^4 + 6 s^5).
-    const double s = std::clamp(t - start, 0.0, 1.0), s2 = s * s;
-    return {travel * s2 * s * (10 - 15 * s + 6 * s2), travel * 30 * s2 * (1 - 2 * s + s2), travel * 60 * s * (1 - 3 * s + 2 * s2)};
-  }
-};
 
 struct Planar {
   vehicle::Vehicle linkage;
@@ -59,30 +42,9 @@ const Planar& sedanDrive() {
 
 const Planar& vehicleNamed(const std::string& name) { return name == "sedan_drive" ? sedanDrive() : sedan(); }
 
-// Both models of one vehicle on level ground, with the same inputs.
-struct Pair {
-  const vehicle::Vehicle& v;
-  terrain::PlaneTerrain ground;
-  Rack rack;
-  vehicle::PlanarCar car;
-  mb::MultibodyDae dae;
-  vehicle::VehicleForces forces;
-  explicit Pair(const vehicle::Vehicle& planar) : v(planar), car(planar, ground), dae(planar.model), forces(planar, ground) {
-    car.setRack(&rack);
-    dae.addForceProvider(&forces);
-    for (int slot = 0; slot < planar.model.nDrivers; ++slot) dae.setDriverSignal(slot, &rack);
-  }
-  void inputs(int w, double drive, double brake) {
-    car.forces().setDriveTorque(w, drive);
-    car.forces().setBrakeCapacity(w, brake);
-    forces.setDriveTorque(w, drive);
-    forces.setBrakeCapacity(w, brake);
-    // A powertrain's: part throttle in a low gear, the clutch slipping.
-    const vehicle::DrivelineCommand c{0.6, 250.0, 12.0};
-    car.forces().setDriveline(c);
-    forces.setDriveline(c);
-  }
-};
+using Pair = testing_closed_form::Pair<vehicle::PlanarCar>;
+using testing_closed_form::accelerations;
+using testing_closed_form::Accelerations;
 
 // A state of the closed form: speeds, yaw rate, roll and pitch with their
 // rates, wheel spins from a longitudinal slip.
@@ -112,41 +74,6 @@ void makeState(const vehicle::Vehicle& v, const State& s, integ::Vec& q, integ::
   }
 }
 
-// Accelerations of both models at one state (the multibody model's mapped
-// onto the closed form's coordinates), and what the tyres did there.
-struct Accelerations {
-  integ::Vec closed, multibody;
-  int wheelsInContact = 0;
-  double largestFriction = 0;  // |F_horizontal| / Fz of the most used tyre
-};
-
-Accelerations accelerations(Pair& p, double t, const integ::Vec& q, const integ::Vec& v) {
-  integ::Counters counters;
-  integ::Message msg;
-  Accelerations out;
-  // At an accepted point (no step under way: the rack's acceleration is the
-  // signal's, the brakes' springs as they were accepted), the contact planes cast.
-  p.car.beginStep(t, q, v);
-  p.car.forces().markAccepted(t);
-  integ::ForwardDynamics closed(p.car);
-  integ::Vec lambda;
-  EXPECT_EQ(closed.solve(t, q, v, 0, 0, out.closed, lambda, counters, msg), integ::EvalStatus::Ok) << msg.c_str();
-  integ::Vec qm, vm, am;
-  p.car.toMultibody(t, q, v, qm, vm);
-  p.dae.beginStep(t, qm, vm);
-  p.forces.markAccepted(t);
-  integ::ForwardDynamics multibody(p.dae);
-  EXPECT_EQ(multibody.solve(t, qm, vm, 0, 0, am, lambda, counters, msg), integ::EvalStatus::Ok) << msg.c_str();
-  integ::Vec unused;
-  p.car.fromMultibody(qm, am, unused, out.multibody);
-  for (const vehicle::WheelOutput& o : p.car.forces().outputs()) {
-    if (!o.out.inContact) continue;
-    ++out.wheelsInContact;
-    out.largestFriction = std::max(out.largestFriction, std::hypot(o.out.Fx, o.out.Fy) / o.out.Fz);
-  }
-  return out;
-}
-
 class PlanarCarOf : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(PlanarCarOf, SameAccelerationsAsTheMultibodyPlanarModel) {
@@ -165,33 +92,13 @@ TEST_P(PlanarCarOf, SameAccelerationsAsTheMultibodyPlanarModel) {
       {{10, 0.5, 0.2, 0.2, 0.0, 0.0, 0.0, 0.0}},                      // rolled far: a wheel in the air
       {{20, 0.5, 0.25, 0.01, 0.0, 0.0, 0.0, 0.0}, 0.01, 0.05, 2.0},   // steering: the rack moving
   };
-  bool sawSaturated = false, sawAirborne = false;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    for (int w = 0; w < 4; ++w) p.inputs(w, w >= 2 ? 300.0 : 0.0, i == 1 ? 800.0 : 0.0);
-    p.rack.travel = cases[i].rack;
-    p.rack.rate = cases[i].rackRate;
-    p.rack.accel = cases[i].rackAccel;
-    integ::Vec q, v;
-    makeState(p.v, cases[i].state, q, v);
-    const Accelerations a = accelerations(p, 0.5, q, v);
-    const double peak = tyre::peakFriction(p.v.wheel(0).tyre, 1.0);
-    const double worst =
-        (a.closed - a.multibody).cwiseAbs().cwiseQuotient((1 + a.multibody.cwiseAbs().array()).matrix()).maxCoeff();
-    std::printf("case %zu: %d wheels in contact, most used tyre at %.2f of its peak friction; largest difference "
-                "%.2g of the acceleration\n",
-                i, a.wheelsInContact, a.largestFriction / peak, worst);
-    sawSaturated = sawSaturated || a.largestFriction > 0.95 * peak;
-    sawAirborne = sawAirborne || a.wheelsInContact < 4;
-    // A moving rack's share goes through the derivatives of tables of the
-    // moved bodies' first moment and momentum (the closed form's) against
-    // those of the carriers' poses (the multibody model's): splines through
-    // the same values, whose derivatives differ by their interpolation error.
-    const double tolerance = cases[i].rackRate != 0 || cases[i].rackAccel != 0 ? 1e-6 : 1e-7;
-    for (int k = 0; k < p.car.coordinates(); ++k)
-      EXPECT_NEAR(a.closed(k), a.multibody(k), tolerance * (1 + std::abs(a.multibody(k)))) << "case " << i << ", coordinate " << k;
-  }
-  EXPECT_TRUE(sawSaturated);
-  EXPECT_TRUE(sawAirborne);
+  // A moving rack's share goes through the derivatives of tables of the
+  // moved bodies' first moment and momentum (the closed form's) against
+  // those of the carriers' poses (the multibody model's): splines through
+  // the same values, whose derivatives differ by their interpolation error.
+  testing_closed_form::expectSameAccelerations(p, cases, makeState, [](const Case& c) {
+    return c.rackRate != 0 || c.rackAccel != 0 ? 1e-6 : 1e-7;
+  });
 }
 
 // A J-turn at 80 km/h on both models (BDF2, 2 Newton iterations): RMS
@@ -260,23 +167,7 @@ TEST_P(PlanarCarOf, MassMatrixIsTheResidualsDerivative) {
   integ::Vec q, v;
   makeState(p.v, {18, 1.0, 0.4, 0.04, -0.02, 0.3, 0.1, 0.1}, q, v);
   p.rack.travel = 0.01;
-  p.car.beginStep(0.5, q, v);
-  integ::Mat M;
-  ASSERT_TRUE(p.car.massMatrix(0.5, q, M));
-  integ::Residual r0, r1;
-  integ::DaeSizes n = p.car.sizes();
-  r0.resize(n);
-  r1.resize(n);
-  integ::Message msg;
-  const integ::Vec a = integ::Vec::LinSpaced(n.nv, -2, 3), lambda;
-  ASSERT_EQ(p.car.residual(0.5, q, v, a, lambda, r0, true, msg), integ::EvalStatus::Ok);
-  for (int k = 0; k < n.nv; ++k) {
-    integ::Vec ak = a;
-    ak(k) += 1.0;  // the residual is linear in a: a unit difference is exact up to rounding
-    ASSERT_EQ(p.car.residual(0.5, q, v, ak, lambda, r1, true, msg), integ::EvalStatus::Ok);
-    for (int j = 0; j < n.nv; ++j) EXPECT_NEAR(r1.F(j) - r0.F(j), M(j, k), 1e-8 * (1 + M.norm())) << j << ", " << k;
-  }
-  EXPECT_NEAR((M - M.transpose()).norm(), 0.0, 1e-12 * M.norm());
+  testing_closed_form::expectMassMatrixIsTheResidualsDerivative(p.car, 0.5, q, v);
 }
 
 TEST_P(PlanarCarOf, CoordinatesMapToTheMultibodyModelAndBack) {

@@ -20,9 +20,11 @@ namespace {
 
 std::string asset(const std::string& rel) { return std::string(BDFCAR_SOURCE_DIR) + "/assets/" + rel; }
 
-std::vector<VehicleSample> run(const char* file, vehicle::Fidelity rung) {
+// step > 0: the integration step instead of the scenario's.
+std::vector<VehicleSample> run(const char* file, vehicle::Fidelity rung, double step = 0) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(file));
   spec.fidelity.suspension = rung;
+  if (step > 0) spec.integrator.step = step;
   scenario::Simulation sim(spec);
   const scenario::RunResult r = scenario::runScenario(sim, {});
   EXPECT_TRUE(r.ok) << r.failure;
@@ -161,8 +163,12 @@ TEST(VehicleChannels, CornerChannelsOfTheKinematicModelFollowTheLinkage) {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/jturn.toml"));
   scenario::Simulation sim(spec);
   const vehicle::Vehicle& link = sim.vehicle();
-  const std::vector<VehicleSample> a = run("scenarios/jturn.toml", vehicle::Fidelity::Linkage);
-  const std::vector<VehicleSample> b = run("scenarios/jturn.toml", vehicle::Fidelity::Kinematic);
+  // Both converged (1 ms): the models' difference, not their steps' (at
+  // 10 ms the ramp's kinks move the dampers by a step's impulse, which the
+  // closed form and the linkage's driver constraints integrate differently:
+  // 1.5 and 1.9 % of the peak damper force from the converged linkage).
+  const std::vector<VehicleSample> a = run("scenarios/jturn.toml", vehicle::Fidelity::Linkage, 0.001);
+  const std::vector<VehicleSample> b = run("scenarios/jturn.toml", vehicle::Fidelity::Kinematic, 0.001);
   ASSERT_EQ(a.size(), b.size());
   const vehicle::VehicleSheet sheet = vehicle::vehicleSheet(link);
   for (int w = 0; w < 4; ++w) {

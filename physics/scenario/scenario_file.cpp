@@ -346,6 +346,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     if (form != "closed" && form != "multibody")
       f->fail("unknown planar_equations '" + form + "': expected closed or multibody", "planar_equations");
     s.fidelity.planarClosedForm = form == "closed";
+    const std::string kform = f->string("kinematic_equations", "closed");
+    if (kform != "closed" && kform != "multibody")
+      f->fail("unknown kinematic_equations '" + kform + "': expected closed or multibody", "kinematic_equations");
+    s.fidelity.kinematicClosedForm = kform == "closed";
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

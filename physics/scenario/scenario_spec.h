@@ -100,6 +100,8 @@ struct FidelitySpec {
   // or through the generic multibody machinery (the same equations, several
   // times the cost: kept to measure one against the other).
   bool planarClosedForm = true;
+  // The kinematic rung's, likewise (vehicle/kinematic_car.h).
+  bool kinematicClosedForm = true;
 };
 
 // The default error budget of `auto` (fidelity.error_budget): each derived

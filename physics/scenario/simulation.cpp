@@ -336,7 +336,7 @@ std::optional<std::string> Simulation::overturned() const {
   // roof or side past 90 deg (a planar model cannot roll over).
   if (vehicle().planar) return std::nullopt;
   const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
-  const double* qc = integrator_->current().q.data() + ch.qIndex;
+  const double* qc = integrator_->current().q.data() + (car_ ? 0 : ch.qIndex);  // a closed form holds it first
   // The z component of the chassis' z axis, from its quaternion (w, x, y, z):
   // no rotation matrix on the step while the car is upright.
   const double w = qc[3], x = qc[4], y = qc[5], z = qc[6];

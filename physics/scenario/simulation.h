@@ -40,7 +40,7 @@
 #include "vehicle/equilibrium.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/kinematic_model.h"
-#include "vehicle/planar_car.h"
+#include "vehicle/closed_form_car.h"
 #include "vehicle/planar_model.h"
 #include "vehicle/vehicle_forces.h"
 #include "vehicle/vehicle_sample.h"
@@ -211,7 +211,12 @@ class Simulation {
   const World& world() const { return *world_; }
   const ScenarioSpec& spec() const { return world_->spec; }
   const vehicle::Vehicle& vehicle() const { return *rungs_[active_].vehicle; }
+  // The integrator of the rung driving (a closed form's holds its own coordinates).
   const integ::Integrator& integrator() const { return *integrator_; }
+  // The current point in the active rung's multibody coordinates (what the
+  // integrator holds, or a closed form's mapped: its rack multipliers from
+  // the multibody residual).
+  integ::SolutionPoint multibodyPoint();
   const std::optional<Iso3888Course>& course() const { return world_->course; }
   // Steering input in [-1, 1] applied at time t (scripted, path follower or person).
   double steerAt(double t) const { return rack_.steerAt(t); }
@@ -244,22 +249,19 @@ class Simulation {
   DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx, bool multibody = false) const;
   void steerToward(double command);
 
-  // One model of the vehicle with its force laws and integrator. A planar
-  // model steps in closed form (car: its own force laws; dae is then the
-  // multibody model of the same equations, evaluated for outputs only).
+  // One model of the vehicle with its force laws and integrator. A derived
+  // model steps in closed form where one carries it (car: its own force
+  // laws; dae is then the multibody model of the same equations, evaluated
+  // for outputs only).
   struct Rung {
     const vehicle::Vehicle* vehicle = nullptr;
     std::unique_ptr<vehicle::VehicleForces> forces;
     std::unique_ptr<mb::MultibodyDae> dae;
-    std::unique_ptr<vehicle::PlanarCar> car;
+    std::unique_ptr<vehicle::ClosedFormCar> car;
     integ::Dae* stepping = nullptr;  // dae or car
     std::unique_ptr<integ::Integrator> integrator;
     mb::Data scratch;  // poses for the switch's jump check (no allocation then)
   };
-  // The current point in the active rung's multibody coordinates (what the
-  // integrator holds, or a closed-form planar model's mapped: its rack
-  // multipliers from the multibody residual).
-  integ::SolutionPoint multibodyPoint();
   // The multibody coordinates of a rung's (q, v) at time t, and back.
   void toMultibody(int rung, double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const;
   void fromMultibody(int rung, const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
@@ -280,7 +282,7 @@ class Simulation {
   // The active rung's parts.
   vehicle::VehicleForces* forces_ = nullptr;
   mb::MultibodyDae* dae_ = nullptr;          // the multibody model (a closed form's: for outputs only)
-  vehicle::PlanarCar* car_ = nullptr;        // the closed-form planar model stepping, if it is one
+  vehicle::ClosedFormCar* car_ = nullptr;    // the closed form stepping, if one is
   integ::Dae* stepping_ = nullptr;
   integ::Integrator* integrator_ = nullptr;
   std::optional<FidelityPolicy> policy_;

@@ -13,15 +13,15 @@
 namespace bdfcar::scenario {
 
 DrivelineSpeeds Simulation::drivelineSpeeds(const integ::Vec& v, double vx, bool multibody) const {
-  // The closed-form planar model holds the spins and the crank at its own places.
+  // A closed form holds the spins and the crank at its own places.
   const bool closed = car_ && !multibody;
   DrivelineSpeeds s;
   s.vx = vx;
-  s.engine = v(closed ? int(vehicle::PlanarCar::Engine) : vehicle().layout.engineV);
+  s.engine = v(closed ? car_->engineV() : vehicle().layout.engineV);
   int n = 0;
   for (int w = 0; w < 4; ++w)
     if (vehicle().wheel(w).driven) {
-      s.output += vehicle().layout.wheels[w].spinSign * v(closed ? vehicle::PlanarCar::Spin + w : vehicle().layout.wheels[w].spinV);
+      s.output += vehicle().layout.wheels[w].spinSign * v(closed ? car_->spinV(w) : vehicle().layout.wheels[w].spinV);
       ++n;
     }
   s.output /= std::max(1, n);
@@ -98,9 +98,9 @@ Simulation::ChassisState Simulation::chassisState() const {
   if (vehicle().planar) {
     // The planar joint: (x, y, yaw) and (forward, sideways, yaw rate) of the
     // base; the centre of mass where it sits on the base at rest.
-    // (The closed-form planar model holds them first.)
+    // (A closed form holds them first.)
     const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
-    const double* qb = p.q.data() + (car_ ? int(vehicle::PlanarCar::X) : b.qIndex);
+    const double* qb = p.q.data() + (car_ ? 0 : b.qIndex);
     const int bv = car_ ? 0 : b.vIndex;
     const double u = p.v(bv), r = p.v(bv + 2);
     const Eigen::Vector3d c = vehicle().planar->comInBase;
@@ -113,9 +113,10 @@ Simulation::ChassisState Simulation::chassisState() const {
     return s;
   }
   const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
-  const double* qc = p.q.data() + ch.qIndex;
+  const double* qc = p.q.data() + (car_ ? 0 : ch.qIndex);  // a closed form holds the free joint first
   const Eigen::Matrix3d R = Eigen::Quaterniond(qc[3], qc[4], qc[5], qc[6]).toRotationMatrix();
-  const Eigen::Vector3d vb = p.v.segment<3>(ch.vIndex), wb = p.v.segment<3>(ch.vIndex + 3);
+  const int cv = car_ ? 0 : ch.vIndex;
+  const Eigen::Vector3d vb = p.v.segment<3>(cv), wb = p.v.segment<3>(cv + 3);
   ChassisState s;
   s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
   s.yaw = pm::atan2(R(1, 0), R(0, 0));

@@ -11,6 +11,8 @@
 #include "integrator/explicit.h"
 #include "multibody/kinematics.h"
 #include "multibody/model_error.h"
+#include "vehicle/kinematic_car.h"
+#include "vehicle/planar_car.h"
 #include "vehicle/rung_mapping.h"
 #include "portable_math.h"
 
@@ -22,16 +24,21 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   vehicle::TerrainContactOptions contact;
   contact.raysPerWheel = spec().raysPerWheel;
   r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
-  if (veh.planar && spec().fidelity.planarClosedForm) {
-    // The planar model in closed form where it carries the car (planar_car.h
-    // says what it refuses): its force laws are the multibody model's too.
-    try {
+  // The derived models in closed form where one carries the car
+  // (planar_car.h and kinematic_car.h say what they refuse): its force laws
+  // are the multibody model's too.
+  const FidelitySpec& f = spec().fidelity;
+  try {
+    if (veh.planar && f.planarClosedForm)
       r.car = std::make_unique<vehicle::PlanarCar>(veh, *world_->terrain, contact);
-      r.car->setRack(&rack_);
-      r.dae->addForceProvider(&r.car->forces());
-    } catch (const mb::ModelError&) {
-      r.car.reset();
-    }
+    else if (veh.fidelity == vehicle::Fidelity::Kinematic && f.kinematicClosedForm)
+      r.car = std::make_unique<vehicle::KinematicCar>(veh, *world_->terrain, contact);
+  } catch (const mb::ModelError&) {
+    r.car.reset();
+  }
+  if (r.car) {
+    r.car->setRack(&rack_);
+    r.dae->addForceProvider(&r.car->forces());
   }
   if (!r.car) {
     r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
@@ -73,7 +80,7 @@ void Simulation::activate(int rung) {
 
 void Simulation::toMultibody(int rung, double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm,
                              integ::Vec& vm) const {
-  if (const vehicle::PlanarCar* car = rungs_[rung].car.get()) {
+  if (const vehicle::ClosedFormCar* car = rungs_[rung].car.get()) {
     car->toMultibody(t, q, v, qm, vm);
     return;
   }
@@ -82,7 +89,7 @@ void Simulation::toMultibody(int rung, double t, const integ::Vec& q, const inte
 }
 
 void Simulation::fromMultibody(int rung, const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const {
-  if (const vehicle::PlanarCar* car = rungs_[rung].car.get()) {
+  if (const vehicle::ClosedFormCar* car = rungs_[rung].car.get()) {
     car->fromMultibody(qm, vm, q, v);
     return;
   }

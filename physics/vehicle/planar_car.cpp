@@ -18,9 +18,6 @@ const Vec3 kX = Vec3::UnitX(), kY = Vec3::UnitY(), kZ = Vec3::UnitZ();
 
 [[noreturn]] void refuse(const std::string& what) { throw mb::ModelError("closed-form planar car: " + what); }
 
-// A body's rotational inertia with its rotor's (Body::rotorInertia), body axes.
-Mat3 fullInertia(const mb::Body& b) { return b.inertia + b.rotorInertia * b.rotorAxis * b.rotorAxis.transpose(); }
-
 // The base frame's yaw: base -> world (toWorld) and back (toLocal).
 terrain::HeadingTurn headingOf(double angle) {
   const pm::SinCos r = pm::sincos(angle);
@@ -40,8 +37,10 @@ Mat3 rollPitch(double roll, double pitch) {
 }  // namespace
 
 PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, const TerrainContactOptions& options)
-    : vehicle_(planar), forces_(planar, terrain, options), steeringTime_(std::numeric_limits<double>::quiet_NaN()) {
+    : ClosedFormCar(planar, terrain, options), steeringTime_(std::numeric_limits<double>::quiet_NaN()) {
   if (!planar.planar) refuse("the vehicle is not a planar model");
+  n_ = nq_ = kCoordinates;
+  fastColumns_ = {Spin, Spin + 1, Spin + 2, Spin + 3};
   const mb::Model& m = planar.model;
   const VehicleLayout& L = planar.layout;
   const mb::Body& base = m.bodies[L.base];
@@ -75,11 +74,8 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
   mb::updatePositions(m, q0, d);
   const Vec3 origin = d.p[L.base];
   std::vector<int> steered;  // the bodies the rack moves
-  for (const mb::CutJoint& c : m.cutJoints) {
+  for (const mb::CutJoint& c : m.cutJoints)
     if (c.type != mb::CutJointType::Driver) refuse("cut joint '" + c.name + "' is not a rack driver");
-    const mb::Body& b = m.bodies[c.drivenBody];
-    drivenCoordinates_.emplace_back(b.qIndex + c.drivenCoordinate, b.vIndex + c.drivenCoordinate);
-  }
   if (L.engine >= 0) {
     // The crank: a massless rotor about the sprung body's x axis (addEngine).
     const mb::Body& e = m.bodies[L.engine];
@@ -89,7 +85,7 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
     engineInertia_ = e.rotorInertia;
     engineQ_ = e.qIndex;
     engineV_ = e.vIndex;
-    n_ = kCoordinates + 1;
+    n_ = nq_ = kCoordinates + 1;
   }
   if (m.nv != n_ + static_cast<int>(drivenCoordinates_.size()) || m.nq != m.nv)
     refuse("the planar model has coordinates the closed form does not carry");
@@ -155,17 +151,10 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
     const int sp = L.wheels[w].spindle;
     const mb::Body& b = m.bodies[sp];
     const std::string name = std::string("wheel ") + kCornerNames[w];
-    if (b.joint != mb::JointType::Revolute) refuse(name + " does not spin on a revolute joint");
-    const Vec3 axis = b.inChild.axes.col(2);  // the spin joint's axis, wheel frame
-    const Mat3 I = fullInertia(b);
+    const SpinJoint spin = spinJoint(b, name, "closed-form planar car");
     Wheel& W = wheels_[w];
-    W.spinInertia = axis.dot(I * axis);
-    const double scale = std::max(1.0, I.norm());
-    auto offAxis = [&](const Vec3& x) { return (x - x.dot(axis) * axis).norm(); };
-    if ((I * axis - W.spinInertia * axis).norm() > 1e-9 * scale || offAxis(b.com) > 1e-9 ||
-        offAxis(b.inChild.origin) > 1e-9 || std::abs(std::abs(axis.y()) - 1.0) > 1e-9)
-      refuse(name + " is not symmetric about its spin axis (its y axis)");
-    W.spinSign = axis.y() > 0 ? 1.0 : -1.0;
+    W.spinInertia = spin.inertia;
+    W.spinSign = spin.sign;
     W.multibodyQ = b.qIndex;
     W.multibodyV = b.vIndex;
     W.centre = d.p[sp] - origin;
@@ -197,13 +186,7 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
 
 void PlanarCar::updateSteering(double t) {
   if (t == steeringTime_) return;
-  mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
-  // The rack's acceleration as the step sees it: its rate's change over the
-  // step, so that a jump of the rate (a steering signal's kink: an impulse
-  // in the acceleration) moves the steering's inertia as the multibody
-  // form's driven coordinates do, instead of being lost between two samples.
-  const double h = forces_.sinceAccepted(t);
-  if (rack_ && h > 0) rack.accel = (rack.rate - rack_->at(t - h).rate) / h;
+  const mb::SignalValue rack = rackInStep(t);
   steeringTime_ = t;
   // A rack held where it was (a straight, a steady turn) moves nothing.
   if (rack.value == rackNow_.value && rack.rate == rackNow_.rate && rack.accel == rackNow_.accel && steeringValid_) return;
@@ -270,19 +253,8 @@ void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
 
 integ::EvalStatus PlanarCar::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                         integ::Message& msg) {
-  if (!q.allFinite() || !v.allFinite()) {
-    msg.set("non-finite state at t = %.6g s", t);
-    return integ::EvalStatus::Fatal;
-  }
-  for (int i = 0; i < n_; ++i)
-    if (std::abs(v(i)) > limits_.maxVelocity) {
-      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
-      return integ::EvalStatus::Fatal;
-    }
-  const double since = forces_.sinceAccepted(t);
-  for (int w = 0; w < 4; ++w) forces_.acceptWheel(w, kinematics_[w], relativeSpin_[w], since, h);
-  if (engineV_ >= 0) forces_.acceptDriveline(v(Engine), relativeSpin_, since);
-  forces_.markAccepted(t);
+  const integ::EvalStatus status = acceptWheels(t, h, q, v, msg);
+  if (status != integ::EvalStatus::Ok) return status;
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();
   return integ::EvalStatus::Ok;
 }
@@ -512,32 +484,7 @@ void PlanarCar::toMultibody(double t, const integ::Vec& q, const integ::Vec& v, 
     qm(engineQ_) = q(Engine);
     vm(engineV_) = v(Engine);
   }
-  const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
-  for (const auto& [iq, iv] : drivenCoordinates_) {
-    qm(iq) = rack.value;
-    vm(iv) = rack.rate;
-  }
-}
-
-integ::SolutionPoint PlanarCar::multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view) {
-  const mb::Model& m = vehicle_.model;
-  integ::SolutionPoint out;
-  out.t = p.t;
-  toMultibody(p.t, p.q, p.v, out.q, out.v);
-  integ::Vec unusedQ;
-  toMultibody(p.t, p.q, p.a, unusedQ, out.a);  // the accelerations map as the velocities do, but for the rack's
-  const mb::SignalValue rack = rack_ ? rack_->at(p.t) : mb::SignalValue{};
-  for (const auto& driven : drivenCoordinates_) out.a(driven.second) = rack.accel;
-  // F = tau - joint forces, tau holding each driver's multiplier on its
-  // coordinate: with none, the residual there is minus the multiplier.
-  out.lambda = integ::Vec::Zero(m.nc);
-  integ::Residual r;
-  r.resize(view.sizes());
-  integ::Message msg;
-  if (view.residual(p.t, out.q, out.v, out.a, out.lambda, r, false, msg) == integ::EvalStatus::Ok)
-    for (const mb::CutJoint& c : m.cutJoints)
-      out.lambda(c.row) = -r.F(m.bodies[c.drivenBody].vIndex + c.drivenCoordinate);
-  return out;
+  driveMultibody(t, qm, vm);
 }
 
 Vec3 PlanarCar::chassisOrigin(const integ::Vec& q) const {

@@ -37,18 +37,12 @@
 #include <array>
 #include <vector>
 
-#include "integrator/dae.h"
-#include "integrator/step_types.h"
-#include "multibody/multibody_dae.h"
 #include "multibody/spline_grid.h"
-#include "multibody/time_signal.h"
-#include "terrain/terrain.h"
-#include "vehicle/vehicle_builder.h"
-#include "vehicle/vehicle_forces.h"
+#include "vehicle/closed_form_car.h"
 
 namespace bdfcar::vehicle {
 
-class PlanarCar final : public integ::Dae {
+class PlanarCar final : public ClosedFormCar {
  public:
   static constexpr int kCoordinates = 9;  // without an engine
   enum Index { X = 0, Y = 1, Yaw = 2, Roll = 3, Pitch = 4, Spin = 5, Engine = 9 };  // q; v: forward, sideways, yaw rate, ...
@@ -57,28 +51,14 @@ class PlanarCar final : public integ::Dae {
   // mb::ModelError naming what the closed form does not carry.
   PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, const TerrainContactOptions& options = {});
 
-  // The rack travel (m along the rack, as the multibody model's rack drivers).
-  void setRack(const mb::TimeSignal* rack) { rack_ = rack; }
-  void setLimits(const mb::StateLimits& l) { limits_ = l; }
-  VehicleForces& forces() { return forces_; }
-  const VehicleForces& forces() const { return forces_; }
+  // The multibody planar model's coordinates (its rack and steered carriers
+  // from the rack signal), and back.
+  void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const override;
+  void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const override;
+  Vec3 chassisOrigin(const integ::Vec& q) const override;
+  int spinV(int w) const override { return Spin + w; }
+  int engineV() const override { return engineV_ >= 0 ? int(Engine) : -1; }
 
-  // The multibody planar model's coordinates for this model's (q, v) at time
-  // t (its rack and steered carriers from the rack signal), and back.
-  void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const;
-  void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const;
-  // A solution point in the multibody model's coordinates, its rack drivers'
-  // multipliers (the rack force) from the multibody residual there: view
-  // must be that model with forces() as its force provider; its data holds
-  // that evaluation after.
-  integ::SolutionPoint multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view);
-  // Wheel w's centre (world) at the last residual evaluation, and the
-  // sprung body's frame origin (world) at positions q.
-  const Vec3& wheelCentre(int w) const { return kinematics_[w].centre; }
-  Vec3 chassisOrigin(const integ::Vec& q) const;
-
-  int coordinates() const { return n_; }
-  integ::DaeSizes sizes() const override { return {n_, n_, 0}; }
   void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
   void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
@@ -88,12 +68,7 @@ class PlanarCar final : public integ::Dae {
   integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
                              const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
                              integ::Message& msg) override;
-  const std::vector<int>& fastColumns() const override { return fastColumns_; }
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
-  bool constraintJacobian(double, const integ::Vec&, integ::Mat& Phi_q) override {
-    Phi_q.resize(0, n_);  // no constraint: nothing to difference
-    return true;
-  }
 
  private:
   // A wheel as the closed form sees it, in the base frame.
@@ -110,12 +85,6 @@ class PlanarCar final : public integ::Dae {
   };
   // The geometry of the step's time (the steered wheels at the rack signal).
   void updateSteering(double t);
-  const Vehicle& vehicle_;
-  int n_ = kCoordinates;
-  VehicleForces forces_;
-  const mb::TimeSignal* rack_ = nullptr;
-  mb::StateLimits limits_;
-  std::vector<int> fastColumns_{Spin, Spin + 1, Spin + 2, Spin + 3};
 
   // Everything but the sprung body, riding on the base: its mass, first
   // moment in the base plane and yaw inertia about the base origin (at the
@@ -148,14 +117,6 @@ class PlanarCar final : public integ::Dae {
   double steeringTime_;
   mb::SignalValue rackNow_;       // the rack the steering geometry is at
   bool steeringValid_ = false;
-  int multibodyRackQ_ = -1, multibodyRackV_ = -1;
-  std::vector<std::pair<int, int>> drivenCoordinates_;  // multibody (q, v) indices the rack drivers tie
-
-  // The last residual evaluation's wheel kinematics (what the step's
-  // acceptance advances the force laws' states with, as the multibody
-  // model's acceptance does).
-  std::array<tyre::WheelKinematics, 4> kinematics_;
-  std::array<double, 4> relativeSpin_{};
 };
 
 }  // namespace bdfcar::vehicle

@@ -1,0 +1,92 @@
+#include "vehicle/closed_form_car.h"
+
+#include <cmath>
+
+#include "multibody/model_error.h"
+
+namespace bdfcar::vehicle {
+
+ClosedFormCar::ClosedFormCar(const Vehicle& v, const terrain::Terrain& terrain, const TerrainContactOptions& options)
+    : vehicle_(v), forces_(v, terrain, options) {
+  const mb::Model& m = v.model;
+  for (const mb::CutJoint& c : m.cutJoints) {
+    if (c.type != mb::CutJointType::Driver) continue;  // a derived class refuses loops it does not carry
+    const mb::Body& b = m.bodies[c.drivenBody];
+    drivenCoordinates_.emplace_back(b.qIndex + c.drivenCoordinate, b.vIndex + c.drivenCoordinate);
+  }
+}
+
+ClosedFormCar::SpinJoint ClosedFormCar::spinJoint(const mb::Body& b, const std::string& name, const std::string& model) {
+  if (b.joint != mb::JointType::Revolute) throw mb::ModelError(model + ": " + name + " does not spin on a revolute joint");
+  const Vec3 axis = b.inChild.axes.col(2);  // the spin joint's axis, wheel frame
+  const Mat3 I = fullInertia(b);
+  SpinJoint out;
+  out.inertia = axis.dot(I * axis);
+  const double scale = std::max(1.0, I.norm());
+  auto offAxis = [&](const Vec3& x) { return (x - x.dot(axis) * axis).norm(); };
+  const Mat3 across = Mat3::Identity() - axis * axis.transpose();
+  const double transverse = 0.5 * (I.trace() - out.inertia);
+  if ((I * axis - out.inertia * axis).norm() > 1e-9 * scale || offAxis(b.com) > 1e-9 ||
+      offAxis(b.inChild.origin) > 1e-9 || std::abs(std::abs(axis.y()) - 1.0) > 1e-9 ||
+      (across * I * across - transverse * across).norm() > kTransverseSpread * transverse)
+    throw mb::ModelError(model + ": " + name + " is not symmetric about its spin axis (its y axis)");
+  out.sign = axis.y() > 0 ? 1.0 : -1.0;
+  out.symmetric = transverse * across + out.inertia * axis * axis.transpose();
+  return out;
+}
+
+mb::SignalValue ClosedFormCar::rackInStep(double t) const {
+  mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  const double h = forces_.sinceAccepted(t);
+  if (rack_ && h > 0) rack.accel = (rack.rate - rack_->at(t - h).rate) / h;
+  return rack;
+}
+
+void ClosedFormCar::driveMultibody(double t, integ::Vec& qm, integ::Vec& vm) const {
+  const mb::SignalValue rack = rack_ ? rack_->at(t) : mb::SignalValue{};
+  for (const auto& [iq, iv] : drivenCoordinates_) {
+    qm(iq) = rack.value;
+    vm(iv) = rack.rate;
+  }
+}
+
+integ::SolutionPoint ClosedFormCar::multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view) {
+  const mb::Model& m = vehicle_.model;
+  integ::SolutionPoint out;
+  out.t = p.t;
+  toMultibody(p.t, p.q, p.v, out.q, out.v);
+  integ::Vec unusedQ;
+  toMultibody(p.t, p.q, p.a, unusedQ, out.a);  // the accelerations map as the velocities do, but for the rack's
+  const mb::SignalValue rack = rack_ ? rack_->at(p.t) : mb::SignalValue{};
+  for (const auto& driven : drivenCoordinates_) out.a(driven.second) = rack.accel;
+  // F = tau - joint forces, tau holding each driver's multiplier on its
+  // coordinate: with none, the residual there is minus the multiplier.
+  out.lambda = integ::Vec::Zero(m.nc);
+  integ::Residual r;
+  r.resize(view.sizes());
+  integ::Message msg;
+  if (view.residual(p.t, out.q, out.v, out.a, out.lambda, r, false, msg) == integ::EvalStatus::Ok)
+    for (const mb::CutJoint& c : m.cutJoints)
+      out.lambda(c.row) = -r.F(m.bodies[c.drivenBody].vIndex + c.drivenCoordinate);
+  return out;
+}
+
+integ::EvalStatus ClosedFormCar::acceptWheels(double t, double h, const integ::Vec& q, const integ::Vec& v,
+                                              integ::Message& msg) {
+  if (!q.allFinite() || !v.allFinite()) {
+    msg.set("non-finite state at t = %.6g s", t);
+    return integ::EvalStatus::Fatal;
+  }
+  for (int i = 0; i < n_; ++i)
+    if (std::abs(v(i)) > limits_.maxVelocity) {
+      msg.set("velocity coordinate %d = %.3g exceeds %.3g at t = %.6g s", i, v(i), limits_.maxVelocity, t);
+      return integ::EvalStatus::Fatal;
+    }
+  const double since = forces_.sinceAccepted(t);
+  for (int w = 0; w < 4; ++w) forces_.acceptWheel(w, kinematics_[w], relativeSpin_[w], since, h);
+  if (engineV() >= 0) forces_.acceptDriveline(v(engineV()), relativeSpin_, since);
+  forces_.markAccepted(t);
+  return integ::EvalStatus::Ok;
+}
+
+}  // namespace bdfcar::vehicle

@@ -1,0 +1,112 @@
+// What the rungs stepped in closed form share (planar_car.h, kinematic_car.h):
+// a model written out for its one topology, with the steering an input (no
+// rack driver constraints), stepped by the same integrators as the
+// multibody model it stands for, and mapped onto that model for everything
+// else (telemetry, rendering, switches between rungs, run states): the
+// multibody model stays the one definition of the car's coordinates.
+//
+// Each holds its chassis first (the planar base's planar joint, or the
+// sprung body's free joint) at q and v index 0, as the multibody models do,
+// and says where its wheel spins and its crank are (spinV, engineV).
+#pragma once
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "integrator/dae.h"
+#include "integrator/step_types.h"
+#include "multibody/multibody_dae.h"
+#include "multibody/time_signal.h"
+#include "terrain/terrain.h"
+#include "vehicle/vehicle_builder.h"
+#include "vehicle/vehicle_forces.h"
+
+namespace bdfcar::vehicle {
+
+class ClosedFormCar : public integ::Dae {
+ public:
+  ClosedFormCar(const Vehicle& v, const terrain::Terrain& terrain, const TerrainContactOptions& options);
+
+  // The rack travel (m along the rack, as the multibody model's rack drivers).
+  void setRack(const mb::TimeSignal* rack) { rack_ = rack; }
+  void setLimits(const mb::StateLimits& l) { limits_ = l; }
+  VehicleForces& forces() { return forces_; }
+  const VehicleForces& forces() const { return forces_; }
+
+  // The multibody model's coordinates for this model's (q, v) at time t
+  // (what the rack drives from the rack signal), and back.
+  virtual void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const = 0;
+  virtual void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const = 0;
+  // A solution point in the multibody model's coordinates, its rack drivers'
+  // multipliers (the rack force) from the multibody residual there: view
+  // must be that model with forces() as its force provider; its data holds
+  // that evaluation after.
+  integ::SolutionPoint multibodyPoint(const integ::SolutionPoint& p, mb::MultibodyDae& view);
+  // Wheel w's centre (world) at the last residual evaluation, and the
+  // chassis frame's origin (world) at positions q.
+  const Vec3& wheelCentre(int w) const { return kinematics_[w].centre; }
+  virtual Vec3 chassisOrigin(const integ::Vec& q) const = 0;
+  // Where wheel w's spin joint rate and the crank's rate (-1: none) are in v.
+  virtual int spinV(int w) const = 0;
+  virtual int engineV() const = 0;
+
+  int coordinates() const { return n_; }
+  integ::DaeSizes sizes() const override { return {nq_, n_, 0}; }
+  bool constraintJacobian(double, const integ::Vec&, integ::Mat& Phi_q) override {
+    Phi_q.resize(0, n_);  // no constraint: nothing to difference
+    return true;
+  }
+  const std::vector<int>& fastColumns() const override { return fastColumns_; }
+
+ protected:
+  // A wheel spinning on a revolute joint, symmetric about its axis (the
+  // closed forms' wheels): its inertia about the axis and the axis' sign
+  // along the wheel's y, and its inertia made exactly symmetric: the two
+  // transverse moments' mean for each (data rounded from a sum of parts
+  // differ by parts in a million: the sedan's 3.240478 and 3.240496 kg m^2;
+  // the multibody model turns that difference with the spin angle, the
+  // closed forms do not). Throws mb::ModelError naming the wheel if its
+  // centre of mass is off the axis, the axis is not principal or the
+  // transverse moments differ by more than kTransverseSpread.
+  static constexpr double kTransverseSpread = 1e-3;  // of their mean
+  struct SpinJoint {
+    double inertia = 0;  // kg m^2 about the spin axis
+    double sign = 1;     // the joint's axis along the wheel's y (+1 or -1)
+    Mat3 symmetric;      // the whole inertia, symmetric about the axis (wheel axes)
+  };
+  static SpinJoint spinJoint(const mb::Body& wheel, const std::string& name, const std::string& model);
+  // A body's rotational inertia with its rotor's (Body::rotorInertia), body axes.
+  static Mat3 fullInertia(const mb::Body& b) {
+    const Vec3 axis = b.rotorAxis.normalized();  // as the multibody model takes it (ModelBuilder::addBody)
+    return b.inertia + b.rotorInertia * axis * axis.transpose();
+  }
+
+  // The rack at t as the step sees it: its acceleration is its rate's change
+  // over the step, so that a jump of the rate (a steering signal's kink: an
+  // impulse in the acceleration) moves the steering's inertia as the
+  // multibody form's driven coordinates do, instead of being lost between
+  // two samples.
+  mb::SignalValue rackInStep(double t) const;
+  // The multibody model's driven coordinates (q, v) set from the rack signal at t.
+  void driveMultibody(double t, integ::Vec& qm, integ::Vec& vm) const;
+  // The acceptance both closed forms make: a non-finite or runaway state is
+  // fatal; otherwise the force laws advance over the step with the last
+  // residual's wheel kinematics (as the multibody model's acceptance does).
+  integ::EvalStatus acceptWheels(double t, double h, const integ::Vec& q, const integ::Vec& v, integ::Message& msg);
+
+  const Vehicle& vehicle_;
+  int n_ = 0, nq_ = 0;
+  VehicleForces forces_;
+  const mb::TimeSignal* rack_ = nullptr;
+  mb::StateLimits limits_;
+  std::vector<int> fastColumns_;                         // the spins
+  std::vector<std::pair<int, int>> drivenCoordinates_;   // multibody (q, v) indices the rack drivers tie
+  // The last residual evaluation's wheel kinematics and spins relative to
+  // their carriers (what the step's acceptance advances the force laws with).
+  std::array<tyre::WheelKinematics, 4> kinematics_;
+  std::array<double, 4> relativeSpin_{};
+};
+
+}  // namespace bdfcar::vehicle

@@ -1,0 +1,114 @@
+// The kinematic rung in closed form (issue 25): the equations of motion of
+// the kinematic model (kinematic_model.h) written out for its one topology,
+// with the steering an input, instead of the generic multibody machinery
+// (joint recursion over 6D motions, the rack and the steered tables' rack
+// travel as driver constraints and their multipliers).
+//
+// Coordinates: q = (chassis position (world) and attitude quaternion (w, x,
+// y, z) as the free joint's, travel FL FR RL RR, spin FL FR RL RR[, crank]);
+// v = (the chassis origin's velocity and the angular velocity, both in
+// chassis axes, the travels' and spins' rates[, the crank's rate relative
+// to the chassis]): 14 (15) velocity coordinates, no constraint.
+//
+// Bodies, all from the multibody model it stands for (one derivation, one
+// set of numbers): the chassis; the rack, sliding on it with the rack
+// signal; per corner one rigid body (the carrier with its wheel's mass and
+// transverse inertia, both constant in the carrier's frame for a wheel
+// symmetric about its axis) on the carrier's table over its travel (and the
+// rack travel where it steers), evaluated once per residual; the wheel's
+// spin as a rotor on it; the crank as a rotor about the chassis' x axis.
+// Equations by virtual power (Kane's form) in chassis axes: each corner's
+// inertial and applied forces reduced to a wrench about its carrier's
+// origin, projected on the chassis' six motions and its own travel.
+// Forces: VehicleForces' force laws fed by per-wheel kinematics (one tyre
+// model, one terrain query path), the springs and dampers through the
+// tables' lengths, the anti-roll bars, drag and lift.
+//
+// Not carried (the constructor refuses, the multibody kinematic model runs
+// instead): bodies other than these, point-to-point springs, wheels not
+// symmetric about their spin axis.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "vehicle/closed_form_car.h"
+
+namespace bdfcar::vehicle {
+
+class KinematicCar final : public ClosedFormCar {
+ public:
+  static constexpr int kPositions = 15, kCoordinates = 14;  // without an engine
+  // Indices of the travels and spins in q (Q) and v (V), the crank's last.
+  static constexpr int TravelQ = 7, SpinQ = 11, EngineQ = 15;
+  static constexpr int TravelV = 6, SpinV = 10, EngineV = 14;
+
+  // kinematic: a kinematic model (deriveKinematic). Throws mb::ModelError
+  // naming what the closed form does not carry.
+  KinematicCar(const Vehicle& kinematic, const terrain::Terrain& terrain, const TerrainContactOptions& options = {});
+
+  void toMultibody(double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm, integ::Vec& vm) const override;
+  void fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ::Vec& q, integ::Vec& v) const override;
+  Vec3 chassisOrigin(const integ::Vec& q) const override { return q.head<3>(); }
+  int spinV(int w) const override { return SpinV + w; }
+  int engineV() const override { return engineMultibodyV_ >= 0 ? int(EngineV) : -1; }
+
+  void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
+  void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
+  void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
+  void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
+  integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
+                               integ::Message& msg) override;
+  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
+                             integ::Message& msg) override;
+  bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
+
+ private:
+  // A corner: the carrier and its wheel as one body over the carrier's table.
+  struct Corner {
+    const mb::SplineGrid* table = nullptr;  // pose (3 + 3 angles) and the springs' lengths over travel (and rack)
+    Mat3 rest = Mat3::Identity();           // the table's rest rotation
+    bool steered = false;                   // tabulated over the rack travel too
+    double mass = 0;
+    Vec3 com = Vec3::Zero();                // carrier frame
+    Mat3 inertia = Mat3::Zero();            // about com, carrier axes (the wheel's whole, it is symmetric)
+    double spinInertia = 0, spinSign = 1;   // the wheel about its axis; the joint's axis along its y
+    Vec3 axisY = Vec3::UnitY();             // the wheel's y axis, carrier frame
+    Vec3 centre = Vec3::Zero();             // the wheel's centre, carrier frame
+    std::vector<std::pair<int, int>> springs;  // (model spring, table component)
+    int travelQ = 0, travelV = 0, spinQ = 0, spinV = 0;  // the multibody model's
+  };
+  // A corner's pose and motion relative to the chassis at one evaluation
+  // (chassis axes): its table at the travel and rack, the rates' share.
+  struct CornerMotion {
+    Mat3 R;                    // carrier axes in chassis axes
+    Vec3 t;                    // carrier origin
+    Vec3 ts, ws;               // origin velocity and angular velocity per unit travel rate
+    Vec3 velocity, omega;      // relative origin velocity and angular velocity at the rates
+    Vec3 accelBias, alphaBias; // relative accelerations but the travel's acceleration's share
+    double springForce = 0;    // the springs' and dampers' generalised force on the travel (+ pushing it up)
+  };
+  // withRates false: the pose and the partials alone (positions only).
+  void cornerMotion(int w, double travel, double travelRate, CornerMotion& m, bool withRates) const;
+  void updateSteering(double t);
+
+  Vec3 gravity_;
+  // The chassis body (its frame is the free joint's).
+  double chassisMass_ = 0;
+  Vec3 chassisCom_;
+  Mat3 chassisInertia_;
+  // The rack: its centre of mass over the rack travel, its inertia (chassis axes).
+  double rackMass_ = 0;
+  Vec3 rackCom0_, rackAxis_;
+  Mat3 rackInertia_;
+  // The crank: a rotor about the chassis' x axis.
+  double engineInertia_ = 0;
+  int engineMultibodyQ_ = -1, engineMultibodyV_ = -1;
+  std::array<Corner, 4> corners_;
+  // The rack at the step's time.
+  double steeringTime_;
+  mb::SignalValue rackNow_;
+};
+
+}  // namespace bdfcar::vehicle

@@ -1,0 +1,154 @@
+// What the closed-form rungs' tests share (test_planar_car.cpp,
+// test_kinematic_car.cpp): a rack signal, a closed form and the multibody
+// model it is written from side by side with the same inputs, both models'
+// accelerations at one state, and the check of an analytic mass matrix
+// against differences of the residual.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "integrator/forward_dynamics.h"
+#include "terrain/terrain.h"
+#include "vehicle/closed_form_car.h"
+
+namespace bdfcar::testing_closed_form {
+
+// The rack held, or moved smoothly to a travel over a second (a J-turn's steering).
+struct Rack final : mb::TimeSignal {
+  double travel = 0, start = -1;  // start < 0: held at travel
+  double rate = 0, accel = 0;
+  bool kinked = false;  // a ramp: the rate jumps at its ends
+  mb::SignalValue at(double t) const override {
+    if (start < 0) return {travel, rate, accel};
+    if (kinked) {
+      const double s = std::clamp(t - start, 0.0, 1.0);
+      return {travel * s, s > 0 && s < 1 ? travel : 0.0, 0.0};
+    }
+    // A smooth step over a second (C2: 10 s^3 - 15 s^4 + 6 s^5).
+    const double s = std::clamp(t - start, 0.0, 1.0), s2 = s * s;
+    return {travel * s2 * s * (10 - 15 * s + 6 * s2), travel * 30 * s2 * (1 - 2 * s + s2), travel * 60 * s * (1 - 3 * s + 2 * s2)};
+  }
+};
+
+// Both models of one vehicle on level ground, with the same inputs.
+template <class Car>
+struct Pair {
+  const vehicle::Vehicle& v;
+  terrain::PlaneTerrain ground;
+  Rack rack;
+  Car car;
+  mb::MultibodyDae dae;
+  vehicle::VehicleForces forces;
+  explicit Pair(const vehicle::Vehicle& model) : v(model), car(model, ground), dae(model.model), forces(model, ground) {
+    car.setRack(&rack);
+    dae.addForceProvider(&forces);
+    for (int slot = 0; slot < model.model.nDrivers; ++slot) dae.setDriverSignal(slot, &rack);
+  }
+  void inputs(int w, double drive, double brake) {
+    car.forces().setDriveTorque(w, drive);
+    car.forces().setBrakeCapacity(w, brake);
+    forces.setDriveTorque(w, drive);
+    forces.setBrakeCapacity(w, brake);
+    // A powertrain's: part throttle in a low gear, the clutch slipping.
+    const vehicle::DrivelineCommand c{0.6, 250.0, 12.0};
+    car.forces().setDriveline(c);
+    forces.setDriveline(c);
+  }
+};
+
+// Accelerations of both models at one state (the multibody model's mapped
+// onto the closed form's coordinates), and what the tyres did there.
+struct Accelerations {
+  integ::Vec closed, multibody;
+  int wheelsInContact = 0;
+  double largestFriction = 0;  // |F_horizontal| / Fz of the most used tyre
+};
+
+template <class Car>
+Accelerations accelerations(Pair<Car>& p, double t, const integ::Vec& q, const integ::Vec& v) {
+  integ::Counters counters;
+  integ::Message msg;
+  Accelerations out;
+  // At an accepted point (no step under way: the rack's acceleration is the
+  // signal's, the brakes' springs as they were accepted), the contact planes cast.
+  p.car.beginStep(t, q, v);
+  p.car.forces().markAccepted(t);
+  integ::ForwardDynamics closed(p.car);
+  integ::Vec lambda;
+  EXPECT_EQ(closed.solve(t, q, v, 0, 0, out.closed, lambda, counters, msg), integ::EvalStatus::Ok) << msg.c_str();
+  integ::Vec qm, vm, am;
+  p.car.toMultibody(t, q, v, qm, vm);
+  p.dae.beginStep(t, qm, vm);
+  p.forces.markAccepted(t);
+  integ::ForwardDynamics multibody(p.dae);
+  EXPECT_EQ(multibody.solve(t, qm, vm, 0, 0, am, lambda, counters, msg), integ::EvalStatus::Ok) << msg.c_str();
+  integ::Vec unused;
+  p.car.fromMultibody(qm, am, unused, out.multibody);
+  for (const vehicle::WheelOutput& o : p.car.forces().outputs()) {
+    if (!o.out.inContact) continue;
+    ++out.wheelsInContact;
+    out.largestFriction = std::max(out.largestFriction, std::hypot(o.out.Fx, o.out.Fy) / o.out.Fz);
+  }
+  return out;
+}
+
+// Both models' accelerations over a list of cases (each with .state and the
+// rack's .rack, .rackRate, .rackAccel): the same to tolerance(case) relative
+// (plus one); the cases must include a saturated tyre and a wheel in the air.
+// makeState(vehicle, state, q, v) builds the closed form's state.
+template <class Car, class Case, class MakeState, class Tolerance>
+void expectSameAccelerations(Pair<Car>& p, const std::vector<Case>& cases, MakeState makeState, Tolerance tolerance) {
+  bool sawSaturated = false, sawAirborne = false;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    for (int w = 0; w < 4; ++w) p.inputs(w, w >= 2 ? 300.0 : 0.0, i == 1 ? 800.0 : 0.0);
+    p.rack.travel = cases[i].rack;
+    p.rack.rate = cases[i].rackRate;
+    p.rack.accel = cases[i].rackAccel;
+    integ::Vec q, v;
+    makeState(p.v, cases[i].state, q, v);
+    const Accelerations a = accelerations(p, 0.5, q, v);
+    const double peak = tyre::peakFriction(p.v.wheel(0).tyre, 1.0);
+    const double worst =
+        (a.closed - a.multibody).cwiseAbs().cwiseQuotient((1 + a.multibody.cwiseAbs().array()).matrix()).maxCoeff();
+    std::printf("case %zu: %d wheels in contact, most used tyre at %.2f of its peak friction; largest difference "
+                "%.2g of the acceleration\n",
+                i, a.wheelsInContact, a.largestFriction / peak, worst);
+    sawSaturated = sawSaturated || a.largestFriction > 0.95 * peak;
+    sawAirborne = sawAirborne || a.wheelsInContact < 4;
+    const double tol = tolerance(cases[i]);
+    for (int k = 0; k < p.car.coordinates(); ++k)
+      EXPECT_NEAR(a.closed(k), a.multibody(k), tol * (1 + std::abs(a.multibody(k)))) << "case " << i << ", coordinate " << k;
+  }
+  EXPECT_TRUE(sawSaturated);
+  EXPECT_TRUE(sawAirborne);
+}
+
+// The analytic mass matrix against unit differences of the residual in a
+// (exact up to rounding: the residual is linear in a), and its symmetry.
+inline void expectMassMatrixIsTheResidualsDerivative(vehicle::ClosedFormCar& car, double t, const integ::Vec& q,
+                                                     const integ::Vec& v) {
+  car.beginStep(t, q, v);
+  integ::Mat M;
+  ASSERT_TRUE(car.massMatrix(t, q, M));
+  integ::Residual r0, r1;
+  const integ::DaeSizes n = car.sizes();
+  r0.resize(n);
+  r1.resize(n);
+  integ::Message msg;
+  const integ::Vec a = integ::Vec::LinSpaced(n.nv, -2, 3), lambda;
+  ASSERT_EQ(car.residual(t, q, v, a, lambda, r0, true, msg), integ::EvalStatus::Ok);
+  for (int k = 0; k < n.nv; ++k) {
+    integ::Vec ak = a;
+    ak(k) += 1.0;
+    ASSERT_EQ(car.residual(t, q, v, ak, lambda, r1, true, msg), integ::EvalStatus::Ok);
+    for (int j = 0; j < n.nv; ++j) EXPECT_NEAR(r1.F(j) - r0.F(j), M(j, k), 1e-8 * (1 + M.norm())) << j << ", " << k;
+  }
+  EXPECT_NEAR((M - M.transpose()).norm(), 0.0, 1e-12 * M.norm());
+}
+
+}  // namespace bdfcar::testing_closed_form
