@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "multibody/joint.h"
 #include "multibody/model_error.h"
 
 namespace bdfcar::vehicle {
@@ -33,6 +34,21 @@ ClosedFormCar::SpinJoint ClosedFormCar::spinJoint(const mb::Body& b, const std::
   out.sign = axis.y() > 0 ? 1.0 : -1.0;
   out.symmetric = transverse * across + out.inertia * axis * axis.transpose();
   return out;
+}
+
+void ClosedFormCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
+  mb::jointRetract(chassisJoint_, q.data(), dq.data(), out.data());
+  out.tail(nq_ - chassisQ_) = q.tail(nq_ - chassisQ_) + dq.tail(n_ - chassisV_);
+}
+
+void ClosedFormCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
+  mb::jointLocal(chassisJoint_, base.data(), q.data(), out.data());
+  out.tail(n_ - chassisV_) = q.tail(nq_ - chassisQ_) - base.tail(nq_ - chassisQ_);
+}
+
+void ClosedFormCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
+  mb::jointLocalRate(chassisJoint_, delta.data(), v.data(), out.data());
+  out.tail(n_ - chassisV_) = v.tail(n_ - chassisV_);
 }
 
 mb::SignalValue ClosedFormCar::rackInStep(double t) const {

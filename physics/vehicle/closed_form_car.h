@@ -59,6 +59,10 @@ class ClosedFormCar : public integ::Dae {
     return true;
   }
   const std::vector<int>& fastColumns() const override { return fastColumns_; }
+  // The chassis' joint (its first coordinates), then plain vector coordinates.
+  void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
+  void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
+  void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
 
  protected:
   // A wheel spinning on a revolute joint, symmetric about its axis (the
@@ -98,6 +102,10 @@ class ClosedFormCar : public integ::Dae {
 
   const Vehicle& vehicle_;
   int n_ = 0, nq_ = 0;
+  // The chassis' joint and its position and velocity coordinates (planar: 3
+  // and 3; free: 7 and 6), set by the derived class.
+  mb::JointType chassisJoint_ = mb::JointType::Free;
+  int chassisQ_ = 7, chassisV_ = 6;
   VehicleForces forces_;
   const mb::TimeSignal* rack_ = nullptr;
   mb::StateLimits limits_;

@@ -28,6 +28,9 @@ KinematicCar::KinematicCar(const Vehicle& k, const terrain::Terrain& terrain, co
   const mb::Model& m = k.model;
   const VehicleLayout& L = k.layout;
   n_ = kCoordinates;
+  chassisJoint_ = mb::JointType::Free;  // the chassis'
+  chassisQ_ = 7;
+  chassisV_ = 6;
   nq_ = kPositions;
   fastColumns_ = {SpinV, SpinV + 1, SpinV + 2, SpinV + 3};
   gravity_ = m.gravity;
@@ -193,21 +196,6 @@ void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerM
     const double Ldot = Ls * rates[0] + (C.steered ? s.grad[c][1] * rates[1] : 0.0);
     out.springForce += vehicle_.model.springs[k].force(L, Ldot) * Ls;
   }
-}
-
-void KinematicCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
-  mb::jointRetract(mb::JointType::Free, q.data(), dq.data(), out.data());
-  out.tail(nq_ - 7) = q.tail(nq_ - 7) + dq.tail(n_ - 6);
-}
-
-void KinematicCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
-  mb::jointLocal(mb::JointType::Free, base.data(), q.data(), out.data());
-  out.tail(n_ - 6) = q.tail(nq_ - 7) - base.tail(nq_ - 7);
-}
-
-void KinematicCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
-  mb::jointLocalRate(mb::JointType::Free, delta.data(), v.data(), out.data());
-  out.tail(n_ - 6) = v.tail(n_ - 6);
 }
 
 void KinematicCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {

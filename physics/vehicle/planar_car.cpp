@@ -40,6 +40,8 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
     : ClosedFormCar(planar, terrain, options), steeringTime_(std::numeric_limits<double>::quiet_NaN()) {
   if (!planar.planar) refuse("the vehicle is not a planar model");
   n_ = nq_ = kCoordinates;
+  chassisJoint_ = mb::JointType::Planar;  // the base's
+  chassisQ_ = chassisV_ = 3;
   fastColumns_ = {Spin, Spin + 1, Spin + 2, Spin + 3};
   const mb::Model& m = planar.model;
   const VehicleLayout& L = planar.layout;
@@ -220,21 +222,6 @@ void PlanarCar::updateSteering(double t) {
     W.steeringSpinRate = cdd * s.f[6] + cd * cd * s.grad[6][0];
     W.tiltRate = cd * s.grad[5][0];
   }
-}
-
-void PlanarCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
-  mb::jointRetract(mb::JointType::Planar, q.data(), dq.data(), out.data());
-  out.tail(n_ - 3) = q.tail(n_ - 3) + dq.tail(n_ - 3);
-}
-
-void PlanarCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
-  mb::jointLocal(mb::JointType::Planar, base.data(), q.data(), out.data());
-  out.tail(n_ - 3) = q.tail(n_ - 3) - base.tail(n_ - 3);
-}
-
-void PlanarCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
-  mb::jointLocalRate(mb::JointType::Planar, delta.data(), v.data(), out.data());
-  out.tail(n_ - 3) = v.tail(n_ - 3);
 }
 
 void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {

@@ -59,9 +59,6 @@ class PlanarCar final : public ClosedFormCar {
   int spinV(int w) const override { return Spin + w; }
   int engineV() const override { return engineV_ >= 0 ? int(Engine) : -1; }
 
-  void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
-  void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
-  void localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const override;
   void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
   integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                integ::Message& msg) override;
