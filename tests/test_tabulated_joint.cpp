@@ -70,6 +70,42 @@ TEST(SplineGrid, ContinuesLinearlyAndContinuouslyBeyondTheGrid) {
   EXPECT_EQ(out1.hess[0][0], 0.0);
 }
 
+TEST(SplineGrid, RowCachedEvaluationIsTheDirectOne) {
+  // Many x at one y through the row cache (the cell contracted along y once)
+  // against the direct tensor-product evaluation: the same function, the
+  // sums in another order. Across cells, at a changed y, and beyond the grid.
+  const GridAxis ax{-1.0, 0.05, 41}, ay{-0.5, 0.05, 21};
+  std::vector<std::vector<double>> samples(3, std::vector<double>(ax.nodes * ay.nodes));
+  for (int j = 0; j < ay.nodes; ++j)
+    for (int i = 0; i < ax.nodes; ++i) {
+      const double x = ax.start + i * ax.step, y = ay.start + j * ay.step;
+      samples[0][i + ax.nodes * j] = smooth(x, y);
+      samples[1][i + ax.nodes * j] = std::exp(0.5 * x - y);
+      samples[2][i + ax.nodes * j] = x * x * y;
+    }
+  const SplineGrid g(ax, ay, samples);
+  SplineGrid::RowCache cache;
+  SplineGrid::Sample direct, cached;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ux(-1.2, 1.2), uy(-0.6, 0.6);
+  int hits = 0;
+  for (int n = 0; n < 400; ++n) {
+    const double y = n % 20 == 0 ? uy(rng) : cache.y, x = n % 3 == 0 ? ux(rng) : ux(rng) * 0.008 + 0.325;  // within one cell
+    const int before = cache.i;
+    g.eval(x, y, direct);
+    g.eval(x, y, cache, cached);
+    hits += cache.i == before && y == cache.y ? 1 : 0;
+    EXPECT_EQ(direct.outside, cached.outside);
+    for (int c = 0; c < 3; ++c) {
+      const double scale = 1 + std::abs(direct.f[c]);
+      EXPECT_NEAR(cached.f[c], direct.f[c], 1e-12 * scale) << x << " " << y;
+      for (int k = 0; k < 2; ++k) EXPECT_NEAR(cached.grad[c][k], direct.grad[c][k], 1e-11 * (1 + std::abs(direct.grad[c][k])));
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(cached.hess[c][k], direct.hess[c][k], 1e-10 * (1 + std::abs(direct.hess[c][k])));
+    }
+  }
+  EXPECT_GT(hits, 100);  // evaluations where x stayed in the cached cell at the same y
+}
+
 TEST(SplineGrid, RefusesBadGrids) {
   const std::vector<std::vector<double>> two(1, std::vector<double>(2, 0.0));
   EXPECT_THROW(SplineGrid(GridAxis{0, 1, 2}, GridAxis{0, 1, 1}, two), std::invalid_argument);

@@ -154,4 +154,48 @@ void SplineGrid::eval(double x, double y, Sample& out) const {
   out.outside = outX || outY;
 }
 
+void SplineGrid::eval(double x, double y, RowCache& cache, Sample& out) const {
+  if (y_.nodes == 1) {
+    eval(x, y, out);
+    return;
+  }
+  double ux, ex;
+  bool outX;
+  const int i = locate(x_, x, ux, ex, outX);
+  if (i != cache.i || y != cache.y || cache.j < 0) {
+    double uy;
+    const int j = locate(y_, y, uy, cache.ey, cache.outY);
+    const HermiteWeights wy = hermite(uy, y_.step);
+    const std::array<double, 4>* wk[3] = {&wy.w0, &wy.w1, &wy.w2};
+    for (int c = 0; c < components_; ++c)
+      for (int a = 0; a < 2; ++a) {
+        const double* n0 = node(c, (i + a) + x_.nodes * j);
+        const double* n1 = node(c, (i + a) + x_.nodes * (j + 1));
+        for (int k = 0; k < 3; ++k) {
+          const std::array<double, 4>& w = *wk[k];  // node j: w[0] value, w[1] slope; node j + 1: w[2], w[3]
+          cache.values[c][6 * a + 2 * k] = w[0] * n0[0] + w[1] * n0[2] + w[2] * n1[0] + w[3] * n1[2];
+          cache.values[c][6 * a + 2 * k + 1] = w[0] * n0[1] + w[1] * n0[3] + w[2] * n1[1] + w[3] * n1[3];
+        }
+      }
+    cache.y = y;
+    cache.i = i;
+    cache.j = j;
+  }
+  const HermiteWeights wx = hermite(ux, x_.step);
+  const double ey = cache.ey;
+  for (int c = 0; c < components_; ++c) {
+    const std::array<double, 12>& v = cache.values[c];
+    // Along x over the y-contracted node values (P: value, Q: x-slope) of y order k.
+    auto along = [&](const std::array<double, 4>& w, int k) {
+      return w[0] * v[2 * k] + w[1] * v[2 * k + 1] + w[2] * v[6 + 2 * k] + w[3] * v[6 + 2 * k + 1];
+    };
+    const double g = along(wx.w0, 0), gx = along(wx.w1, 0), gy = along(wx.w0, 1);
+    const double gxx = along(wx.w2, 0), gxy = along(wx.w1, 1), gyy = along(wx.w0, 2);
+    out.f[c] = g + ex * gx + ey * gy + ex * ey * gxy;
+    out.grad[c] = {gx + ey * gxy, gy + ex * gxy};
+    out.hess[c] = {outX ? 0.0 : gxx, gxy, cache.outY ? 0.0 : gyy};
+  }
+  out.outside = outX || cache.outY;
+}
+
 }  // namespace bdfcar::mb

@@ -49,6 +49,22 @@ class SplineGrid {
   // Every component at (x, y); y is ignored for one coordinate. No allocation.
   void eval(double x, double y, Sample& out) const;
 
+  // The same for many x at one y (a closed-form car's table over travel
+  // and rack at one step's rack travel): the cell's nodes contracted along
+  // y once and kept in the cache while x stays in that cell and y is the
+  // same; each evaluation is then a spline along x. Equal to eval up to
+  // rounding (the sums are taken in another order).
+  struct RowCache {
+    double y = 0;
+    int i = -1, j = -1;              // the cell contracted (-1: none)
+    double ey = 0;                   // y beyond the grid
+    bool outY = false;
+    // Per component, per x node of the cell (a = 0, 1), per order of the y
+    // derivative (0, 1, 2): the y-contracted value and x-slope.
+    std::array<std::array<double, 12>, kMaxComponents> values{};
+  };
+  void eval(double x, double y, RowCache& cache, Sample& out) const;
+
  private:
   // Node data of component c at node n: f, fx, fy, fxy.
   const double* node(int c, int n) const { return &data_[(static_cast<std::size_t>(c) * nodes_ + n) * 4]; }

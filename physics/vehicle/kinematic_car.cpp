@@ -143,7 +143,7 @@ void KinematicCar::updateSteering(double t) {
 void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerMotion& out, bool withRates) const {
   const Corner& C = corners_[w];
   mb::SplineGrid::Sample s;
-  C.table->eval(travel, C.steered ? rackNow_.value : 0.0, s);
+  C.table->eval(travel, C.steered ? rackNow_.value : 0.0, rows_[w], s);
   const pm::SinCos p = pm::sincos(s.f[3]), f = pm::sincos(s.f[4]), th = pm::sincos(s.f[5]);
   Mat3 M;  // Rz(psi) Rx(phi) Ry(theta)
   M << p.c * th.c - p.s * f.s * th.s, -p.s * f.c, p.c * th.s + p.s * f.s * th.c,  //
@@ -160,10 +160,8 @@ void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerM
   if (!withRates) return;
   const int nv = C.steered ? 2 : 1;
   const double rates[2] = {travelRate, C.steered ? rackNow_.rate : 0.0};
-  Mat3 Ephi = Mat3::Zero(), Etheta = Mat3::Zero();
-  Ephi.col(0) << th.s * f.s, f.c, -th.c * f.s;
-  Etheta.col(0) << -th.c * f.c, 0, -th.s * f.c;
-  Etheta.col(1) << -th.s, 0, th.c;
+  // dE/dphi has one non-zero column (the first), dE/dtheta two (the first two).
+  const Vec3 Ephi0(th.s * f.s, f.c, -th.c * f.s), Etheta0(-th.c * f.c, 0, -th.s * f.c), Etheta1(-th.s, 0, th.c);
   Vec3 wb = w0 * rates[0], wdot = Vec3::Zero();
   out.velocity = out.ts * rates[0];
   out.accelBias.setZero();
@@ -182,7 +180,8 @@ void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerM
       const int h = k + l;  // (0,0) -> xx, (0,1) -> xy, (1,1) -> yy
       const double rr = rates[k] * rates[l];
       const Vec3 d2a(s.hess[3][h], s.hess[4][h], s.hess[5][h]);
-      wdot += ((Ephi * s.grad[4][l] + Etheta * s.grad[5][l]) * da + E * d2a) * rr;
+      wdot += (Ephi0 * (s.grad[4][l] * da.x()) + Etheta0 * (s.grad[5][l] * da.x()) + Etheta1 * (s.grad[5][l] * da.y()) +
+               E * d2a) * rr;
       out.accelBias += Vec3(s.hess[0][h], s.hess[1][h], s.hess[2][h]) * rr;
     }
   }

@@ -103,6 +103,10 @@ class KinematicCar final : public ClosedFormCar {
   double engineInertia_ = 0;
   int engineMultibodyQ_ = -1, engineMultibodyV_ = -1;
   std::array<Corner, 4> corners_;
+  // Each steered corner's table contracted along the rack at the step's
+  // rack travel (SplineGrid::RowCache): the residuals of a step evaluate it
+  // along the travel alone.
+  mutable std::array<mb::SplineGrid::RowCache, 4> rows_;
   // The rack at the step's time.
   double steeringTime_;
   mb::SignalValue rackNow_;
