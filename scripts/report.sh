@@ -167,7 +167,7 @@ bench_table() {
     echo "physics/vehicle/kinematic_car.h; the same measure): the corners' tables (SplineGrid::eval: the"
     echo "steered corners' are bicubic in travel and rack, six pose components and the springs' lengths"
     echo "with their first and second derivatives), the corners' motion from them (cornerMotion) and the"
-    echo "residual's own algebra, for each of the step's three residuals."
+    echo "residual's own algebra, for each of the step's two residuals (a steered corner's table contracted along the rack once a step)."
     echo
     profileTable kinematic
     echo
