@@ -82,6 +82,7 @@ std::vector<const Point*> paretoFront(const std::vector<Point>& pts) {
 
 struct WpCase {
   std::string name, file;
+  std::string vehicle = "sedan.toml";
 };
 
 }  // namespace
@@ -90,13 +91,17 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
   const std::vector<WpCase> cases = {{"J-turn", "jturn.toml"},
                                      {"lane change", "lane_change.toml"},
                                      {"curb strike", "hard/curb_strike.toml"},
+                                     {"curb strike, enveloping tyres", "hard/curb_strike.toml", "sedan_envelope.toml"},
                                      {"sine with dwell", "hard/sine_with_dwell_80.toml"},
-                                     {"rough road", "hard/rough_lane_change.toml"}};
+                                     {"rough road", "hard/rough_lane_change.toml"},
+                                     {"rough road, enveloping tyres", "hard/rough_lane_change.toml", "sedan_envelope.toml"}};
   const std::vector<Setting> all = settings();
   md << "## 5c. Work-precision diagrams\n\n"
      << "Cost (wall time per simulated second, one run each, manoeuvre only) against error (RMS of yaw rate and "
      << "lateral acceleration against the same case converged at 0.5 ms, BDF2 with Newton to tolerance and "
-     << "the Jacobian at every step; the larger of the two, as % of the converged run's peak), sedan.toml. "
+     << "the Jacobian at every step; the larger of the two, as % of the converged run's peak), sedan.toml; "
+     << "the curb and the rough road also on enveloping tyres (sedan_envelope.toml: physics/tyre/envelope.h, the "
+     << "converged run on them too). "
      << "BDF orders 1-3 at 5, 10, 20 and 40 ms with the default policy (2 Newton iterations, Jacobian every "
      << "200 steps); at 10 ms BDF2 with Newton 1, 3 and to tolerance and the Jacobian every step or every 20; RK4 "
      << "and semi-implicit Euler at 1, 2, 5 and 10 ms. A diverged run is drawn at the top of its panel "
@@ -106,7 +111,7 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
   std::vector<std::string> dataFiles;
   md << "| case | Pareto front, cheapest first (cost ms/s, error %) | diverged |\n|---|---|---|\n";
   for (const WpCase& c : cases) {
-    const scenario::ScenarioSpec base = scenarioWith(c.file, "sedan.toml");
+    const scenario::ScenarioSpec base = scenarioWith(c.file, c.vehicle);
     scenario::Simulation fineSim(withIntegrator(base, IntegratorMethod::Bdf, 0.0005, 2, 0, 1));
     const scenario::RunResult fine = scenario::runScenario(fineSim, {});
     if (!fine.ok) {
@@ -186,8 +191,8 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
   md << ".\n\n";
   // The figure: one log-log panel per case.
   const std::string png = imageDir + "/work_precision.png";
-  std::string script = "set terminal pngcairo size 1500,950 font ',10'\nset output '" + png +
-                       "'\nset multiplot layout 2,3\nset logscale xy\nset format y '%g'\nset xlabel 'ms of wall time per "
+  std::string script = "set terminal pngcairo size 1500,1400 font ',10'\nset output '" + png +
+                       "'\nset multiplot layout 3,3\nset logscale xy\nset format y '%g'\nset xlabel 'ms of wall time per "
                        "simulated second'\nset ylabel 'RMS error, % of peak'\nset key off\n";
   const char* style[] = {"lp pt 7 lc rgb '#1f77b4'", "lp pt 7 lc rgb '#2ca02c'", "lp pt 7 lc rgb '#9467bd'",
                          "p pt 5 ps 1.3 lc rgb '#ff7f0e'", "lp pt 9 lc rgb '#d62728'", "lp pt 11 lc rgb '#8c564b'"};
@@ -196,7 +201,7 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
     for (int f = 0; f < 6; ++f) script += "'" + dataFiles[i] + "' index " + std::to_string(f) + " w " + style[f] + ", ";
     script += "'" + dataFiles[i] + "' index 6 w p pt 2 ps 2 lc rgb 'black'\n";
   }
-  // The legend in the sixth panel.
+  // The legend in the panel after the last case.
   script += "unset logscale\nunset title\nunset xlabel\nunset ylabel\nunset border\nunset tics\nset key left center "
             "Left reverse box\nset xrange [0:1]\nset yrange [0:1]\nplot ";
   for (int f = 0; f < 6; ++f) script += std::string("NaN w ") + style[f] + " t '" + kFamily[f] + "', ";

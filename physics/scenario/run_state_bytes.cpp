@@ -109,12 +109,27 @@ void counters(IO& io, C& c) {
     io.field("integrator counters", *n);
 }
 
+// An enveloping tyre's road for the step (its samples beyond n are zero).
+template <class IO, class P>
+void roadProfile(IO& io, P& p) {
+  flag(io, "road profile valid", p.valid);
+  for (auto* x : {&p.origin.x(), &p.origin.y(), &p.heading.x(), &p.heading.y(), &p.s0, &p.ds, &p.friction})
+    io.field("road profile line", *x);
+  const std::uint64_t n = io.count("road profile samples", static_cast<std::uint64_t>(p.n), tyre::RoadProfile::kCapacity);
+  if constexpr (!std::is_const_v<P>) p.n = static_cast<int>(n);
+  for (std::uint64_t k = 0; k < n; ++k) {
+    io.field("road profile height", p.z[k]);
+    io.field("road profile cross slope", p.cross[k]);
+  }
+}
+
 template <class IO, class W>
 void wheel(IO& io, W& w) {
   flag(io, "contact plane valid", w.plane.valid);
   io.field("contact plane point", w.plane.point);
   io.field("contact plane normal", w.plane.normal);
   io.field("contact plane friction", w.plane.friction);
+  roadProfile(io, w.profile);
   io.field("slip kappa", w.slip.kappa);
   io.field("slip tan alpha", w.slip.tanAlpha);
   flag(io, "slip active", w.slip.active);

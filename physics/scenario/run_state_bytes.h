@@ -25,7 +25,7 @@ namespace bdfcar::scenario {
 // 2: the model fingerprint (RunState::model) first. 3: the latest
 // evaluation's tyre outputs left out (they are not state), the accepted
 // step's tyre force in.
-inline constexpr std::uint32_t kRunStateFormat = 3;
+inline constexpr std::uint32_t kRunStateFormat = 4;
 
 class RunStateBytesError : public std::runtime_error {
  public:

@@ -323,6 +323,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
   s.outputInterval = sc.number("output_interval", Dimension::Time, kOutputInterval, s.outputInterval);
   s.tick = sc.number("tick", Dimension::Time, kTick, s.tick);
   s.raysPerWheel = static_cast<int>(sc.integerIn("rays_per_wheel", 1, 15, 1));
+  s.groundInsideStep = sc.boolean("ground_inside_step", s.groundInsideStep);
   sc.finish();
 
   if (auto st = root.optionalTable("start")) {

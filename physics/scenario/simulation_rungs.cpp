@@ -23,6 +23,7 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   r.vehicle = &veh;
   vehicle::TerrainContactOptions contact;
   contact.raysPerWheel = spec().raysPerWheel;
+  contact.groundInsideStep = spec().groundInsideStep;
   r.dae = std::make_unique<mb::MultibodyDae>(veh.model);
   // The derived models in closed form where one carries the car
   // (planar_car.h and kinematic_car.h say what they refuse): its force laws

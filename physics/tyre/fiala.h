@@ -18,6 +18,7 @@
 
 #include <optional>
 
+#include "tyre/envelope.h"
 #include "tyre/tyre.h"
 
 namespace bdfcar::tyre {
@@ -40,6 +41,8 @@ struct FialaParams {
   double lowSpeedDampingX = 4.0e4;     // N s/m on the longitudinal slip velocity at standstill
   double lowSpeedDampingY = 2.0e4;     // N s/m on the lateral slip velocity at standstill
   double maxTransientSlip = 1.5;       // absolute cap of the transient slips (the friction limit is lower)
+  // The contact geometry: the road under one point, or enveloped over the patch (envelope.h).
+  EnvelopeSpec contact;
 };
 
 struct PatchForces {

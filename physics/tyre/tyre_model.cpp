@@ -24,6 +24,10 @@ double peakFriction(const TyreParams& p, double mu) {
   return std::visit([&](const auto& m) { return m.uMax * std::clamp(mu, 0.1, 1.0) / m.referenceFriction; }, p);
 }
 
+const EnvelopeSpec& contact(const TyreParams& p) {
+  return std::visit([](const auto& m) -> const EnvelopeSpec& { return m.contact; }, p);
+}
+
 double width(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.width; }, p);
 }

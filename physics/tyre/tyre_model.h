@@ -19,6 +19,8 @@ double verticalStiffness(const TyreParams& p);  // N/m
 double verticalDamping(const TyreParams& p);    // N s/m
 // The largest force per unit load the tyre gives on ground of friction mu.
 double peakFriction(const TyreParams& p, double mu);
+// Its contact geometry (point or enveloping, tyre/envelope.h).
+const EnvelopeSpec& contact(const TyreParams& p);
 
 // One tyre: its model with its data. `previous` are the transient slips at
 // the last accepted step, h the time since then (the evaluation integrates

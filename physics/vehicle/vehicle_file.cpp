@@ -42,6 +42,9 @@ const Range kTyreWidth{0.0, 2.0, true, false};            // m
 const Range kTyreStiffness{0.0, 1e9, true, false};        // N/m, N, N/rad
 const Range kFriction{0.0, 3.0, true, false};
 const Range kRelaxationLength{0.0, 10.0, true, false};    // m
+const Range kEnvelopeOrder{1.2, 10.0};                    // the cams' superellipse exponent
+const Range kEnvelopeBase{0.0, 2.0, true, false};         // m, the cams' distance
+const Range kEnvelopeSpacing{0.005, 0.2};                 // m, the road lattice's
 const Range kBlendSpeed{0.0, 50.0, true, false};          // m/s
 const Range kRollingResistance{0.0, 1.0};
 const Range kSpinInertia{0.0, 100.0};                     // kg m^2
@@ -102,6 +105,7 @@ class Loader {
   void requireApart(Table& t, const Vec3& a, const Vec3& b, const std::string& key, const char* what);
   tyre::TyreParams readTyre(Table t);
   tyre::FialaParams readFiala(Table& t);
+  tyre::EnvelopeSpec readContact(Table& t);
 
   Table root_;
   VehicleSpec spec_;
@@ -427,8 +431,22 @@ tyre::FialaParams Loader::readFiala(Table& t) {
             "0 < low_speed_blend_start < low_speed_blend_end (m/s)");
   p.lowSpeedDampingX = t.number("low_speed_damping_x", Dimension::Damping, kDamping, p.lowSpeedDampingX);
   p.lowSpeedDampingY = t.number("low_speed_damping_y", Dimension::Damping, kDamping, p.lowSpeedDampingY);
+  p.contact = readContact(t);
   t.finish();
   return p;
+}
+
+// A tyre's contact geometry (tyre/envelope.h): the point, or the envelope
+// with its cams, each length derived from the tyre where not given.
+tyre::EnvelopeSpec Loader::readContact(Table& t) {
+  tyre::EnvelopeSpec e;
+  e.on = t.choice("contact", {"point", "envelope"}, "point") == "envelope";
+  e.halfLength = t.number("envelope_half_length", Dimension::Length, kTyreRadius, 0.0);
+  e.halfHeight = t.number("envelope_half_height", Dimension::Length, kTyreRadius, 0.0);
+  e.order = t.number("envelope_order", Dimension::None, kEnvelopeOrder, e.order);
+  e.base = t.number("envelope_base", Dimension::Length, kEnvelopeBase, 0.0);
+  e.spacing = t.number("envelope_spacing", Dimension::Length, kEnvelopeSpacing, e.spacing);
+  return e;
 }
 
 void Loader::readWheels() {

@@ -12,9 +12,22 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
       terrain_(terrain),
       options_(options),
       tyres_{tyre::Tyre(vehicle.wheel(0).tyre), tyre::Tyre(vehicle.wheel(1).tyre), tyre::Tyre(vehicle.wheel(2).tyre),
-             tyre::Tyre(vehicle.wheel(3).tyre)} {
+             tyre::Tyre(vehicle.wheel(3).tyre)},
+      lattice_(terrain) {
   for (int w = 0; w < 4; ++w)
     if (vehicle.wheel(w).driven) driven_.push_back(w);
+  // The cams' lengths from each tyre where the file leaves them: the static
+  // contact length at a quarter of the car's weight.
+  double mass = 0;
+  for (const BodySpec& b : vehicle.spec.bodies) mass += b.mass;
+  const double quarterWeight = 0.25 * mass * std::abs(vehicle.model.gravity.z());
+  double spacing = INFINITY;
+  for (int w = 0; w < 4; ++w) {
+    const tyre::TyreParams& p = vehicle.wheel(w).tyre;
+    envelopes_[w] = tyre::resolveEnvelope(tyre::contact(p), tyre::unloadedRadius(p), tyre::verticalStiffness(p), quarterWeight);
+    if (envelopes_[w].on) spacing = std::min(spacing, envelopes_[w].spacing);
+  }
+  if (std::isfinite(spacing)) lattice_.setSpacing(spacing);
 }
 
 void VehicleForces::reset(double t) {
@@ -28,6 +41,7 @@ void VehicleForces::reset(double t) {
   driveline_.clutchDeflection = 0;
   lastAccepted_ = t;
   planesReady_ = false;
+  lattice_.clear();
 }
 
 tyre::WheelKinematics VehicleForces::wheelKinematics(const mb::Data& d, int w) const {
@@ -52,6 +66,36 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
   tyre::ContactPlane plane;
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   const double reach = 2.0 * R0 + 0.5;
+  static const char* envs = getenv("BDFCAR_ENV");
+  if (envs) {
+    const double ls = atof(envs), ae = R0, be = R0, d = 0.01;
+    Eigen::Vector3d heading = spinAxis.cross(up);
+    heading.normalize();
+    const int n = int((ls / 2 + ae) / d);
+    double zf = -1e9, zr = -1e9, fr = 0.8;
+    bool any = false;
+    for (int i = -n; i <= n; ++i) {
+      const terrain::Hit h = terrain_.castRay(centre + i * d * heading + R0 * up, -up, reach);
+      if (!h.hit) continue;
+      any = true;
+      if (i == 0) fr = h.friction;
+      const double s = i * d;
+      for (int c = 0; c < 2; ++c) {
+        const double u = (s - (c ? -ls / 2 : ls / 2)) / ae;
+        if (std::abs(u) >= 1) continue;
+        const double z = h.point.z() + be * std::sqrt(1 - u * u) - be;
+        double& zc = c ? zr : zf;
+        zc = std::max(zc, z);
+      }
+    }
+    if (!any) return plane;
+    const double w = 0.5 * (zf + zr), slope = (zf - zr) / ls;
+    plane.valid = true;
+    plane.point = Eigen::Vector3d(centre.x(), centre.y(), w);
+    plane.normal = (up - slope * heading).normalized();
+    plane.friction = fr;
+    return plane;
+  }
   if (options_.raysPerWheel <= 1) {
     const terrain::Hit h = terrain_.castRay(centre + R0 * up, -up, reach);
     if (!h.hit) return plane;
@@ -90,6 +134,60 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
   return plane;
 }
 
+void VehicleForces::prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
+  WheelContact& c = wheels_[w];
+  if (!envelopes_[w].on) {
+    c.plane = queryGround(centre, spinAxis, tyres_[w].unloadedRadius());
+    return;
+  }
+  sampleProfile(w, centre, spinAxis);
+  c.plane = tyre::effectivePlane(envelopes_[w], c.profile, centre);
+}
+
+void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
+  const tyre::Envelope& e = envelopes_[w];
+  tyre::RoadProfile& p = wheels_[w].profile;
+  const double R0 = tyres_[w].unloadedRadius();
+  Eigen::Vector2d heading = spinAxis.cross(Eigen::Vector3d::UnitZ()).head<2>();
+  p.heading = heading.squaredNorm() < 1e-6 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d(heading.normalized());
+  p.origin = centre.head<2>();
+  // Both cams' reach, and a margin for where the step ends up against its
+  // prediction (millimetres; a lattice node more is plenty).
+  const double half = 0.5 * e.base + e.a + 2.0 * lattice_.spacing();
+  const int halfCount = std::min(tyre::RoadProfile::kCapacity / 2 - 1,
+                                 static_cast<int>(std::ceil(half / (0.5 * lattice_.spacing()))));
+  p.ds = half / halfCount;
+  // Samples past n stay zero (a state restored from its bytes has them so).
+  const int n = 2 * halfCount + 1;
+  if (n < p.n) {
+    std::fill(p.z.begin() + n, p.z.begin() + p.n, 0.0);
+    std::fill(p.cross.begin() + n, p.cross.begin() + p.n, 0.0);
+  }
+  p.n = n;
+  p.s0 = -halfCount * p.ds;
+  p.valid = false;
+  const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
+  terrain::HeightLattice::Point at;
+  for (int k = 0; k < p.n; ++k) {
+    const Eigen::Vector2d xy = p.origin + (p.s0 + k * p.ds) * p.heading;
+    if (!lattice_.at(xy.x(), xy.y(), zTop, reach, at)) {
+      p.z[k] = tyre::RoadProfile::kNoGround;
+      p.cross[k] = 0;
+      continue;
+    }
+    p.valid = true;
+    p.z[k] = at.z;
+    p.cross[k] = -p.heading.y() * at.dzdx + p.heading.x() * at.dzdy;
+    if (k == halfCount) p.friction = at.friction;
+  }
+}
+
+tyre::ContactPlane VehicleForces::groundAt(int w, const Eigen::Vector3d& centre) const {
+  const WheelContact& c = wheels_[w];
+  if (!envelopes_[w].on || !options_.groundInsideStep) return c.plane;
+  return tyre::effectivePlane(envelopes_[w], c.profile, centre);
+}
+
 void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
   // Positions only are current here.
   std::array<Eigen::Vector3d, 4> centres, axes;
@@ -103,7 +201,7 @@ void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
 
 void VehicleForces::beginContacts(const std::array<Eigen::Vector3d, 4>& centres,
                                   const std::array<Eigen::Vector3d, 4>& spinAxes) {
-  for (int w = 0; w < 4; ++w) wheels_[w].plane = queryGround(centres[w], spinAxes[w], tyres_[w].unloadedRadius());
+  for (int w = 0; w < 4; ++w) prepareGround(w, centres[w], spinAxes[w]);
   planesReady_ = true;
 }
 
@@ -306,10 +404,12 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
 
 const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKinematics& k, double h,
                                                      std::optional<double> load) {
-  const WheelContact& c = wheels_[w];
+  WheelContact& c = wheels_[w];
+  static const bool live = getenv("BDFCAR_LIVE_PLANE") != nullptr;
+  if (live) c.plane = queryGround(k.centre, k.spinAxis, tyres_[w].unloadedRadius());
   WheelOutput& o = outputs_[w];
   o.spinRate = k.spinRate;
-  o.out = tyres_[w].evaluate(k, c.plane, c.slip, h, load);
+  o.out = tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, load);
   return o.out;
 }
 
@@ -319,7 +419,7 @@ void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double re
   // evaluation's state says whether the wheel is in it).
   const tyre::TyreOutput& out = outputs_[w].out;  // the step's last evaluation
   if (out.slipState.active || !out.inContact)
-    c.slip = tyres_[w].evaluate(k, c.plane, c.slip, h, modelLoad(w)).slipState;
+    c.slip = tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, modelLoad(w)).slipState;
   else
     c.slip.active = false;
   c.acceptedForce = out.inContact ? out.force : Eigen::Vector3d::Zero();
@@ -328,7 +428,7 @@ void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double re
   c.acceptedFy = out.Fy;
   c.acceptedFz = out.Fz;
   // Ground under the wheel at the end of the next step.
-  c.plane = queryGround(k.centre + hNext * k.centreVelocity, k.spinAxis, tyres_[w].unloadedRadius());
+  prepareGround(w, k.centre + hNext * k.centreVelocity, k.spinAxis);
   if (c.brakeCapacity > 0) {
     const double limit = c.brakeCapacity / kBrakeStiffness;
     c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin, -limit, limit);

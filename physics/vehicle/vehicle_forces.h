@@ -3,9 +3,12 @@
 //
 // Terrain: rays are cast once per step, where the wheels will be: from the
 // accepted state extrapolated over the next step (x + v h; at the first step
-// from the predicted state). Within the step each wheel sees that local
-// plane, so the residual stays smooth for Newton and the finite-difference
-// Jacobian. Tyres are evaluated
+// from the predicted state). Within the step a point-contact tyre sees that
+// local plane, so the residual stays smooth for Newton and the
+// finite-difference Jacobian. An enveloping tyre (tyre/envelope.h) gets the
+// road profile along its wheel plane instead, once per step from a height
+// lattice the rays fill, and its cams ride on it at the wheel's position in
+// every residual: the ground follows the wheel inside the step. Tyres are evaluated
 // inside the residual (implicit), which is what keeps the stiff slip dynamics
 // (h * lambda ~ 6 at 10 ms) stable.
 //
@@ -34,6 +37,7 @@
 #include <optional>
 
 #include "multibody/multibody_dae.h"
+#include "terrain/height_lattice.h"
 #include "terrain/terrain.h"
 #include "vehicle/powertrain.h"
 #include "tyre/tyre_model.h"
@@ -44,12 +48,17 @@ namespace bdfcar::vehicle {
 struct TerrainContactOptions {
   int raysPerWheel = 1;          // 1: plane under the wheel centre; >1: envelope over the footprint
   double footprintHalfLength = 0.6;  // of the unloaded radius, for the extra rays
+  // An enveloping tyre's cams placed at the wheel in every residual (true),
+  // or held where the step's prediction put them (false: the frozen ground
+  // of the point contact, kept to show what it costs, tests/test_envelope.cpp).
+  bool groundInsideStep = true;
 };
 
 // One wheel's force-law state (plain data, part of the run state): what
 // carries from step to step, and what the last accepted step produced.
 struct WheelContact {
-  tyre::ContactPlane plane;
+  tyre::ContactPlane plane;      // the ground at the step's predicted position
+  tyre::RoadProfile profile;     // an enveloping tyre's road along its wheel plane for the step
   tyre::SlipState slip;          // transient slips at the last accepted step
   double brakeDeflection = 0;    // rad, brake spring at the last accepted step
   double driveTorque = 0;        // N m about the spin axis (+ drives forward)
@@ -150,7 +159,13 @@ class VehicleForces final : public mb::ForceProvider {
   // A planar model's wheel attitude for its tyre (PlanarLoads::turnPerTravel).
   void planarWheelAttitude(const mb::Data& d, int w, tyre::WheelKinematics& k) const;
   std::array<double, 4> cornerTravel_{};  // m, a planar model's suspension travel from static (+ bump), per evaluation
+  // The ground under wheel w for the next step, at its predicted centre:
+  // the plane (point contact) or the road profile and the plane it gives.
+  void prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
   tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
+  void sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
+  // The ground a tyre at centre feels in a residual.
+  tyre::ContactPlane groundAt(int w, const Eigen::Vector3d& centre) const;
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
@@ -175,6 +190,8 @@ class VehicleForces final : public mb::ForceProvider {
   const terrain::Terrain& terrain_;
   TerrainContactOptions options_;
   std::array<tyre::Tyre, 4> tyres_;
+  std::array<tyre::Envelope, 4> envelopes_;  // each tyre's cams (off: the point contact)
+  terrain::HeightLattice lattice_;           // the enveloping tyres' road, cast node by node
   std::array<WheelContact, 4> wheels_;
   std::array<WheelOutput, 4> outputs_;
   DrivelineState driveline_;

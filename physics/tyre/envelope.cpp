@@ -1,0 +1,136 @@
+#include "tyre/envelope.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bdfcar::tyre {
+
+double staticContactLength(double R0, double kz, double load) {
+  const double delta = std::clamp(load / kz, 0.0, R0);
+  return 2.0 * std::sqrt(std::max(0.0, 2.0 * R0 * delta - delta * delta));
+}
+
+Envelope resolveEnvelope(const EnvelopeSpec& s, double R0, double kz, double staticLoad) {
+  Envelope e;
+  e.on = s.on;
+  e.a = s.halfLength > 0 ? s.halfLength : R0;
+  e.b = s.halfHeight > 0 ? s.halfHeight : R0;
+  e.c = s.order;
+  e.base = s.base > 0 ? s.base : staticContactLength(R0, kz, staticLoad);
+  e.spacing = s.spacing;
+  e.dual = e.c / (e.c - 1.0);
+  return e;
+}
+
+namespace {
+
+// The cam's lower contour below its centre at u = x / a: b (1 - g(u)), with
+// g = (1 - |u|^c)^(1/c). Returned: -b (1 - g), the contour's height over
+// its lowest point (<= 0).
+double contourRise(const Envelope& e, double u) {
+  if (e.c == 2.0) return e.b * (std::sqrt(std::max(0.0, 1.0 - u * u)) - 1.0);
+  const double x = std::pow(std::abs(u), e.c);
+  return e.b * (std::pow(std::max(0.0, 1.0 - x), 1.0 / e.c) - 1.0);
+}
+
+// An upper bound of contourRise: 1 - (1 - x)^(1/c) >= x / c for x in [0, 1].
+double contourRiseBound(const Envelope& e, double u) {
+  if (e.c == 2.0) return -0.5 * e.b * u * u;
+  return -e.b * std::pow(std::abs(u), e.c) / e.c;
+}
+
+// The cam's support function in direction (a m, b): the dual norm of the
+// superellipse's, exponent q = c / (c - 1). Resting on a line of slope m the
+// cam's lowest point stands this less b above the line under its centre.
+double support(const Envelope& e, double m) {
+  if (e.c == 2.0) return std::hypot(e.a * m, e.b);
+  return std::pow(std::pow(std::abs(e.a * m), e.dual) + std::pow(e.b, e.dual), 1.0 / e.dual);
+}
+
+double slopeOffset(const Envelope& e, double m) { return m == 0.0 ? 0.0 : support(e, m) - e.b; }
+
+// Where on the cam (u = x / a) its contour has slope m: the support
+// function's maximiser, sign(m) |a m|^(q-1) / support^(q-1).
+double tangentPoint(const Envelope& e, double m, double sup) {
+  if (e.c == 2.0) return e.a * m / sup;
+  return std::copysign(std::pow(std::abs(e.a * m) / sup, e.dual - 1.0), m);
+}
+
+}  // namespace
+
+double camHeight(const Envelope& e, const RoadProfile& p, double s) {
+  // The cam rests on the profile, linear between its samples: its lowest
+  // point as high as any point of the road under it asks. On a segment the
+  // highest such point is where the contour's slope is the segment's (when
+  // that falls inside it, in closed form: the support function) or an end
+  // (a sample: z_k plus the contour's rise there). Exact for the piecewise
+  // linear road, so a level or evenly sloped road reads without a ripple
+  // between samples.
+  const int lo = std::max(0, static_cast<int>(std::ceil((s - e.a - p.s0) / p.ds)));
+  const int hi = std::min(p.n - 1, static_cast<int>(std::floor((s + e.a - p.s0) / p.ds)));
+  if (lo > hi) return RoadProfile::kNoGround;
+  // The samples around the cam's centre first: the bounds then skip most others.
+  const int mid = std::clamp(static_cast<int>(std::floor((s - p.s0) / p.ds)), lo, hi);
+  const double inv = 1.0 / e.a;
+  double best = RoadProfile::kNoGround;
+  const auto sample = [&](int k) {
+    if (p.z[k] <= best) return;  // the rise is never positive
+    const double u = (p.s0 + k * p.ds - s) * inv;
+    if (p.z[k] + contourRiseBound(e, u) <= best) return;
+    best = std::max(best, p.z[k] + contourRise(e, u));
+  };
+  const auto segment = [&](int k) {  // from sample k to k + 1, both under the cam
+    const double z0 = p.z[k], z1 = p.z[k + 1];
+    if (std::max(z0, z1) <= best || std::min(z0, z1) <= 0.5 * RoadProfile::kNoGround) return;
+    const double m = (z1 - z0) / p.ds, sup = support(e, m);
+    const double x = s + e.a * tangentPoint(e, m, sup) - (p.s0 + k * p.ds);  // the tangent point along the segment
+    if (x < 0 || x > p.ds) return;
+    best = std::max(best, z0 + m * (s - (p.s0 + k * p.ds)) + sup - e.b);
+  };
+  sample(mid);
+  if (mid + 1 <= hi) {
+    sample(mid + 1);
+    segment(mid);
+  }
+  for (int k = lo; k <= hi; ++k) {
+    if (k != mid && k != mid + 1) sample(k);
+    if (k < hi && k != mid) segment(k);
+  }
+  return best;
+}
+
+bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre, EffectiveRoad& out) {
+  if (!p.valid) return false;
+  const Eigen::Vector2d r = centre.head<2>() - p.origin;
+  const double s = r.dot(p.heading);
+  const double lateral = p.heading.x() * r.y() - p.heading.y() * r.x();  // to the heading's left
+  const double front = camHeight(e, p, s + 0.5 * e.base);
+  const double rear = camHeight(e, p, s - 0.5 * e.base);
+  const bool hasFront = front > 0.5 * RoadProfile::kNoGround, hasRear = rear > 0.5 * RoadProfile::kNoGround;
+  if (!hasFront && !hasRear) return false;
+  // One cam over a void (a wheel rolling off an edge): the other alone, level.
+  const double slope = hasFront && hasRear ? (front - rear) / e.base : 0.0;
+  const double mean = hasFront && hasRear ? 0.5 * (front + rear) : (hasFront ? front : rear);
+  // The lateral slope where the wheel is, between the profile's samples.
+  const double x = std::clamp((s - p.s0) / p.ds, 0.0, static_cast<double>(p.n - 1));
+  const int k = std::min(static_cast<int>(x), p.n - 2);
+  const double f = x - k;
+  out.lateralSlope = p.n > 1 ? (1 - f) * p.cross[k] + f * p.cross[k + 1] : p.cross[0];
+  out.forwardSlope = slope;
+  out.height = mean - slopeOffset(e, slope) + out.lateralSlope * lateral;
+  return true;
+}
+
+ContactPlane effectivePlane(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre) {
+  ContactPlane plane;
+  EffectiveRoad road;
+  if (!effectiveRoad(e, p, centre, road)) return plane;
+  plane.valid = true;
+  plane.point = Eigen::Vector3d(centre.x(), centre.y(), road.height);
+  const Eigen::Vector3d forward(p.heading.x(), p.heading.y(), 0), left(-p.heading.y(), p.heading.x(), 0);
+  plane.normal = (Eigen::Vector3d::UnitZ() - road.forwardSlope * forward - road.lateralSlope * left).normalized();
+  plane.friction = p.friction;
+  return plane;
+}
+
+}  // namespace bdfcar::tyre
