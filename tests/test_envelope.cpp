@@ -8,6 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <numbers>
 #include <stdexcept>
 
@@ -86,7 +90,32 @@ TEST(Envelope, EffectivePlaneOfAnyPlaneIsThatPlane) {
         const Eigen::Vector3d normal = Eigen::Vector3d(-m, -lateral, 1).normalized();
         EXPECT_NEAR(g.point.z(), 0.3 + m * 0.013 + lateral * 0.02, 1e-9) << c << " " << m << " " << lateral;
         EXPECT_LT((g.normal - normal).norm(), 1e-9) << c << " " << m << " " << lateral;
+        // The straight road's shortcut (findLine) reads the same.
+        RoadProfile line = p;
+        tyre::findLine(line);
+        ASSERT_TRUE(line.linear);
+        EXPECT_NEAR(tyre::effectivePlane(env, line, centre).point.z(), g.point.z(), 1e-12);
       }
+}
+
+TEST(Envelope, OnLevelGroundTheEnvelopeIsThePoint) {
+  // The J-turn on flat ground: the sedan on enveloping tyres and on point
+  // contacts write the same telemetry, byte for byte (the cams on a level
+  // road stand exactly on it).
+  std::string bytes[2];
+  for (int i = 0; i < 2; ++i) {
+    scenario::ScenarioSpec s = scenario::loadScenarioFile(std::string(BDFCAR_SOURCE_DIR) + "/assets/scenarios/jturn.toml");
+    if (i == 1) s.vehicleFile = std::string(BDFCAR_SOURCE_DIR) + "/assets/vehicles/sedan_envelope.toml";
+    scenario::Simulation sim(s);
+    scenario::RunOptions o;
+    o.telemetryPath = (std::filesystem::temp_directory_path() / ("bdfcar_envelope_flat_" + std::to_string(i) + ".csv")).string();
+    ASSERT_TRUE(scenario::runScenario(sim, o).ok);
+    std::ifstream in(o.telemetryPath, std::ios::binary);
+    bytes[i].assign(std::istreambuf_iterator<char>(in), {});
+    std::filesystem::remove(o.telemetryPath);
+  }
+  EXPECT_GT(bytes[0].size(), 10000u);
+  EXPECT_TRUE(bytes[0] == bytes[1]) << "the envelope moved a flat-road run";
 }
 
 TEST(Envelope, LongRoadWavesAreReadAsThePointReadsThem) {

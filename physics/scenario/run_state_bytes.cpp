@@ -113,8 +113,9 @@ void counters(IO& io, C& c) {
 template <class IO, class P>
 void roadProfile(IO& io, P& p) {
   flag(io, "road profile valid", p.valid);
-  for (auto* x : {&p.origin.x(), &p.origin.y(), &p.heading.x(), &p.heading.y(), &p.s0, &p.ds, &p.friction})
+  for (auto* x : {&p.origin.x(), &p.origin.y(), &p.heading.x(), &p.heading.y(), &p.s0, &p.ds, &p.friction, &p.slope})
     io.field("road profile line", *x);
+  flag(io, "road profile linear", p.linear);
   const std::uint64_t n = io.count("road profile samples", static_cast<std::uint64_t>(p.n), tyre::RoadProfile::kCapacity);
   if constexpr (!std::is_const_v<P>) p.n = static_cast<int>(n);
   for (std::uint64_t k = 0; k < n; ++k) {

@@ -7,12 +7,6 @@ namespace bdfcar::terrain {
 HeightLattice::HeightLattice(const Terrain& terrain, double spacing)
     : terrain_(terrain), spacing_(spacing), slots_(kSide * kSide) {}
 
-void HeightLattice::setSpacing(double spacing) {
-  if (spacing == spacing_) return;
-  spacing_ = spacing;
-  clear();
-}
-
 void HeightLattice::clear() {
   for (Slot& s : slots_) s.used = false;
 }

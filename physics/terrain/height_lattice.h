@@ -19,10 +19,8 @@ namespace bdfcar::terrain {
 
 class HeightLattice {
  public:
-  explicit HeightLattice(const Terrain& terrain, double spacing = 0.04);
+  explicit HeightLattice(const Terrain& terrain, double spacing = 0.05);
   double spacing() const { return spacing_; }
-  // A new spacing empties the lattice.
-  void setSpacing(double spacing);
   void clear();
 
   // The bilinear surface at (x, y): its height, gradient and the friction
@@ -42,7 +40,7 @@ class HeightLattice {
     bool used = false, hit = false;
     double z = 0, friction = 0.8;
   };
-  static constexpr int kSide = 128;  // slots per side, direct-mapped: 5 m at 4 cm
+  static constexpr int kSide = 128;  // slots per side, direct-mapped: 6.4 m at 5 cm
   const Slot& node(long long i, long long j, double zTop, double reach) const;
 
   const Terrain& terrain_;

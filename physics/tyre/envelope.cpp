@@ -58,7 +58,21 @@ double tangentPoint(const Envelope& e, double m, double sup) {
 
 }  // namespace
 
+void findLine(RoadProfile& p) {
+  p.linear = false;
+  p.slope = 0;
+  if (!p.valid || p.n < 2) return;
+  const double m = (p.z[p.n - 1] - p.z[0]) / ((p.n - 1) * p.ds);
+  for (int k = 0; k < p.n; ++k)
+    if (!(std::abs(p.z[k] - (p.z[0] + m * (k * p.ds))) <= 1e-9)) return;  // no ground fails too
+  p.linear = true;
+  p.slope = m;
+}
+
 double camHeight(const Envelope& e, const RoadProfile& p, double s) {
+  // On a straight road the cam stands its support function less b above it.
+  if (p.linear && s - e.a >= p.s0 && s + e.a <= p.s0 + (p.n - 1) * p.ds)
+    return p.z[0] + p.slope * (s - p.s0) + slopeOffset(e, p.slope);
   // The cam rests on the profile, linear between its samples: its lowest
   // point as high as any point of the road under it asks. On a segment the
   // highest such point is where the contour's slope is the segment's (when

@@ -43,14 +43,14 @@ struct EnvelopeSpec {
   double halfHeight = 0;    // b, m (0: the unloaded radius)
   double order = 2;         // c (2: an ellipse)
   double base = 0;          // l_s, m, the cams' distance (0: the static contact length)
-  double spacing = 0.04;    // m, the road lattice's node spacing (the profile is sampled at half of it)
+  double spacing = 0.05;    // m, the road lattice's node spacing (and the profile's sample spacing)
   bool operator==(const EnvelopeSpec&) const = default;
 };
 
 // The cams of one tyre, every length resolved.
 struct Envelope {
   bool on = false;
-  double a = 0, b = 0, c = 2, base = 0, spacing = 0.04;
+  double a = 0, b = 0, c = 2, base = 0, spacing = 0.05;
   double dual = 2;  // c / (c - 1): the exponent of the cams' support function
 };
 
@@ -72,12 +72,18 @@ struct RoadProfile {
   std::array<double, kCapacity> z{};      // m, the road's height at each sample
   std::array<double, kCapacity> cross{};  // the road's slope across the line (dz per m to the heading's left)
   double friction = 0.8;                  // at the sample under the line's origin
+  // Every sample on one line of this slope (to 1 nm: a level or evenly
+  // sloped road), where a cam's height is the line's plus its offset.
+  bool linear = false;
+  double slope = 0;
   bool operator==(const RoadProfile&) const = default;
 };
 
 // The height of a cam's lowest point when the cam, centred at s along the
 // profile, rests on it; kNoGround where no sample lies under it.
 double camHeight(const Envelope& e, const RoadProfile& p, double s);
+// Marks p linear where its samples are all ground on one line.
+void findLine(RoadProfile& p);
 
 // The effective road height, forward and lateral slope under a wheel centre
 // (world); false where neither cam finds ground.

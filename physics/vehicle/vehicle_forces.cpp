@@ -12,8 +12,7 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
       terrain_(terrain),
       options_(options),
       tyres_{tyre::Tyre(vehicle.wheel(0).tyre), tyre::Tyre(vehicle.wheel(1).tyre), tyre::Tyre(vehicle.wheel(2).tyre),
-             tyre::Tyre(vehicle.wheel(3).tyre)},
-      lattice_(terrain) {
+             tyre::Tyre(vehicle.wheel(3).tyre)} {
   for (int w = 0; w < 4; ++w)
     if (vehicle.wheel(w).driven) driven_.push_back(w);
   // The cams' lengths from each tyre where the file leaves them: the static
@@ -27,7 +26,7 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
     envelopes_[w] = tyre::resolveEnvelope(tyre::contact(p), tyre::unloadedRadius(p), tyre::verticalStiffness(p), quarterWeight);
     if (envelopes_[w].on) spacing = std::min(spacing, envelopes_[w].spacing);
   }
-  if (std::isfinite(spacing)) lattice_.setSpacing(spacing);
+  if (std::isfinite(spacing)) lattice_.emplace(terrain, spacing);
 }
 
 void VehicleForces::reset(double t) {
@@ -41,7 +40,7 @@ void VehicleForces::reset(double t) {
   driveline_.clutchDeflection = 0;
   lastAccepted_ = t;
   planesReady_ = false;
-  lattice_.clear();
+  if (lattice_) lattice_->clear();
 }
 
 tyre::WheelKinematics VehicleForces::wheelKinematics(const mb::Data& d, int w) const {
@@ -153,9 +152,10 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   p.origin = centre.head<2>();
   // Both cams' reach, and a margin for where the step ends up against its
   // prediction (millimetres; a lattice node more is plenty).
-  const double half = 0.5 * e.base + e.a + 2.0 * lattice_.spacing();
+  terrain::HeightLattice& lattice = *lattice_;
+  const double half = 0.5 * e.base + e.a + 2.0 * lattice.spacing();
   const int halfCount = std::min(tyre::RoadProfile::kCapacity / 2 - 1,
-                                 static_cast<int>(std::ceil(half / (0.5 * lattice_.spacing()))));
+                                 static_cast<int>(std::ceil(half / lattice.spacing())));
   p.ds = half / halfCount;
   // Samples past n stay zero (a state restored from its bytes has them so).
   const int n = 2 * halfCount + 1;
@@ -167,10 +167,11 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   p.s0 = -halfCount * p.ds;
   p.valid = false;
   const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
+  if (levelProfile(p, zTop, reach)) return;
   terrain::HeightLattice::Point at;
   for (int k = 0; k < p.n; ++k) {
     const Eigen::Vector2d xy = p.origin + (p.s0 + k * p.ds) * p.heading;
-    if (!lattice_.at(xy.x(), xy.y(), zTop, reach, at)) {
+    if (!lattice.at(xy.x(), xy.y(), zTop, reach, at)) {
       p.z[k] = tyre::RoadProfile::kNoGround;
       p.cross[k] = 0;
       continue;
@@ -180,12 +181,40 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
     p.cross[k] = -p.heading.y() * at.dzdx + p.heading.x() * at.dzdy;
     if (k == halfCount) p.friction = at.friction;
   }
+  tyre::findLine(p);
 }
 
-tyre::ContactPlane VehicleForces::groundAt(int w, const Eigen::Vector3d& centre) const {
+bool VehicleForces::levelProfile(tyre::RoadProfile& p, double zTop, double reach) const {
+  // Most road is level: one ray under the line's origin and the terrain's
+  // word that the box around the whole line is level there (to 1 um) fill
+  // the profile without the lattice (terrain.h, levelOver).
+  const terrain::Hit h = terrain_.castRay(Eigen::Vector3d(p.origin.x(), p.origin.y(), zTop), -Eigen::Vector3d::UnitZ(), reach);
+  if (!h.hit) return false;
+  const double half = -p.s0;
+  terrain::Terrain::LevelQuery q;
+  const Eigen::Vector2d a = p.origin - half * p.heading, b = p.origin + half * p.heading;
+  q.lo = a.cwiseMin(b);
+  q.hi = a.cwiseMax(b);
+  q.zTop = zTop;
+  q.zBottom = zTop - reach;
+  q.height = h.point.z();
+  q.tolerance = 1e-6;
+  q.minNormalZ = 1.0;
+  if (!terrain_.levelOver(q)) return false;
+  std::fill(p.z.begin(), p.z.begin() + p.n, q.height);
+  std::fill(p.cross.begin(), p.cross.begin() + p.n, 0.0);
+  p.friction = h.friction;
+  p.valid = true;
+  p.linear = true;
+  p.slope = 0;
+  return true;
+}
+
+const tyre::ContactPlane& VehicleForces::groundAt(int w, const Eigen::Vector3d& centre) {
   const WheelContact& c = wheels_[w];
   if (!envelopes_[w].on || !options_.groundInsideStep) return c.plane;
-  return tyre::effectivePlane(envelopes_[w], c.profile, centre);
+  insideStep_[w] = tyre::effectivePlane(envelopes_[w], c.profile, centre);
+  return insideStep_[w];
 }
 
 void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {

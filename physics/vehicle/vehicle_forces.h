@@ -164,8 +164,12 @@ class VehicleForces final : public mb::ForceProvider {
   void prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
   tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
   void sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
-  // The ground a tyre at centre feels in a residual.
-  tyre::ContactPlane groundAt(int w, const Eigen::Vector3d& centre) const;
+  // Fills p (its line and samples set) when the terrain says the road
+  // under it is level; false otherwise.
+  bool levelProfile(tyre::RoadProfile& p, double zTop, double reach) const;
+  // The ground a tyre at centre feels in a residual: the step's plane (a
+  // point contact), or the envelope's at centre (kept in insideStep_[w]).
+  const tyre::ContactPlane& groundAt(int w, const Eigen::Vector3d& centre);
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
@@ -191,7 +195,10 @@ class VehicleForces final : public mb::ForceProvider {
   TerrainContactOptions options_;
   std::array<tyre::Tyre, 4> tyres_;
   std::array<tyre::Envelope, 4> envelopes_;  // each tyre's cams (off: the point contact)
-  terrain::HeightLattice lattice_;           // the enveloping tyres' road, cast node by node
+  std::array<tyre::ContactPlane, 4> insideStep_;  // an enveloping tyre's ground at its latest evaluation
+  // The enveloping tyres' road, cast node by node (none without one: the
+  // lattice's table is 0.6 MB).
+  std::optional<terrain::HeightLattice> lattice_;
   std::array<WheelContact, 4> wheels_;
   std::array<WheelOutput, 4> outputs_;
   DrivelineState driveline_;
