@@ -147,6 +147,9 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   const tyre::Envelope& e = envelopes_[w];
   tyre::RoadProfile& p = wheels_[w].profile;
   const double R0 = tyres_[w].unloadedRadius();
+  // The level shortcut is tried where the last step's road was level (or at
+  // the start): on relief its ray and the terrain's check would be wasted.
+  const bool wasLevel = !p.valid || (p.linear && std::abs(p.slope) < 1e-9);
   Eigen::Vector2d heading = spinAxis.cross(Eigen::Vector3d::UnitZ()).head<2>();
   p.heading = heading.squaredNorm() < 1e-6 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d(heading.normalized());
   p.origin = centre.head<2>();
@@ -167,7 +170,7 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   p.s0 = -halfCount * p.ds;
   p.valid = false;
   const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
-  if (levelProfile(p, zTop, reach)) return;
+  if (wasLevel && levelProfile(p, zTop, reach)) return;
   terrain::HeightLattice::Point at;
   for (int k = 0; k < p.n; ++k) {
     const Eigen::Vector2d xy = p.origin + (p.s0 + k * p.ds) * p.heading;
