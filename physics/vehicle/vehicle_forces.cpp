@@ -65,36 +65,6 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
   tyre::ContactPlane plane;
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   const double reach = 2.0 * R0 + 0.5;
-  static const char* envs = getenv("BDFCAR_ENV");
-  if (envs) {
-    const double ls = atof(envs), ae = R0, be = R0, d = 0.01;
-    Eigen::Vector3d heading = spinAxis.cross(up);
-    heading.normalize();
-    const int n = int((ls / 2 + ae) / d);
-    double zf = -1e9, zr = -1e9, fr = 0.8;
-    bool any = false;
-    for (int i = -n; i <= n; ++i) {
-      const terrain::Hit h = terrain_.castRay(centre + i * d * heading + R0 * up, -up, reach);
-      if (!h.hit) continue;
-      any = true;
-      if (i == 0) fr = h.friction;
-      const double s = i * d;
-      for (int c = 0; c < 2; ++c) {
-        const double u = (s - (c ? -ls / 2 : ls / 2)) / ae;
-        if (std::abs(u) >= 1) continue;
-        const double z = h.point.z() + be * std::sqrt(1 - u * u) - be;
-        double& zc = c ? zr : zf;
-        zc = std::max(zc, z);
-      }
-    }
-    if (!any) return plane;
-    const double w = 0.5 * (zf + zr), slope = (zf - zr) / ls;
-    plane.valid = true;
-    plane.point = Eigen::Vector3d(centre.x(), centre.y(), w);
-    plane.normal = (up - slope * heading).normalized();
-    plane.friction = fr;
-    return plane;
-  }
   if (options_.raysPerWheel <= 1) {
     const terrain::Hit h = terrain_.castRay(centre + R0 * up, -up, reach);
     if (!h.hit) return plane;
@@ -436,9 +406,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
 
 const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKinematics& k, double h,
                                                      std::optional<double> load) {
-  WheelContact& c = wheels_[w];
-  static const bool live = getenv("BDFCAR_LIVE_PLANE") != nullptr;
-  if (live) c.plane = queryGround(k.centre, k.spinAxis, tyres_[w].unloadedRadius());
+  const WheelContact& c = wheels_[w];
   WheelOutput& o = outputs_[w];
   o.spinRate = k.spinRate;
   o.out = tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, load);
