@@ -117,6 +117,8 @@ bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Eigen::Vector3
   if (!p.valid) return false;
   const Eigen::Vector2d r = centre.head<2>() - p.origin;
   const double s = r.dot(p.heading);
+  // A wheel far off its step's profile (or a diverged state) finds no road.
+  if (!(std::abs(s) < 1e3)) return false;
   const double lateral = p.heading.x() * r.y() - p.heading.y() * r.x();  // to the heading's left
   const double front = camHeight(e, p, s + 0.5 * e.base);
   const double rear = camHeight(e, p, s - 0.5 * e.base);
