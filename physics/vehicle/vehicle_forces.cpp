@@ -149,10 +149,12 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
       p.cross[k] = 0;
       continue;
     }
+    // The friction under the wheel, or of the first ground before it where
+    // the centre finds none (never the last step's).
+    if (k == halfCount || !p.valid) p.friction = at.friction;
     p.valid = true;
     p.z[k] = at.z;
     p.cross[k] = -p.heading.y() * at.dzdx + p.heading.x() * at.dzdy;
-    if (k == halfCount) p.friction = at.friction;
   }
   tyre::findLine(p);
 }
