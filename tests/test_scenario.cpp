@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "config/toml_reader.h"
+#include "scenario/failure_hint.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 
@@ -330,4 +331,46 @@ TEST(Fidelity, PlanarModelStopsWhereTheGroundIsNotLevel) {
   const scenario::RunResult r = scenario::runScenario(c, {});
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.failure.find("left level ground"), std::string::npos) << r.failure;
+}
+
+// A failed step's hint (scenario/failure_hint.h) reads the last accepted
+// step as it is: an impact names the tyre, its load and its multiple of a
+// quarter of the weight (the arithmetic checked here), and the remedies are
+// the ones the run's own settings leave.
+TEST(FailureHint, NamesTheImpactAndWhatToTry) {
+  vehicle::VehicleSample s;
+  s.t = 3.792;
+  s.speed = 12.0 / 3.6;
+  s.Fz = {49300.0, 49200.0, 3000.0, 3000.0};
+  s.inContact = {true, true, true, true};
+  const double weight = 1500.0 * 9.81;  // a quarter: 3678.75 N; 49300 / 3678.75 = 13.4
+  scenario::IntegratorSpec bdf;         // the paper's setting: BDF, 10 ms, 2 Newton iterations
+  const std::string hint = scenario::failureHint(s, weight, bdf);
+  EXPECT_NE(hint.find("(t = 3.792 s, 12 km/h)"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("the front left tyre carried 49.3 kN, 13.4 times its share"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("an impact"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("a 10 ms step"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("--newton 0"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("--step 0.002"), std::string::npos) << hint;
+
+  // Newton already to tolerance: only the shorter step is left to try.
+  scenario::IntegratorSpec toTolerance = bdf;
+  toTolerance.bdf.newtonIterations = 0;
+  toTolerance.step = 0.005;
+  const std::string tight = scenario::failureHint(s, weight, toTolerance);
+  EXPECT_EQ(tight.find("--newton"), std::string::npos) << tight;
+  EXPECT_NE(tight.find("--step 0.001"), std::string::npos) << tight;
+
+  // Under the impact threshold (3 quarters: 11,036 N) no impact is claimed;
+  // all four wheels off the ground is said as that.
+  s.Fz = {11000.0, 0.0, 0.0, 0.0};
+  s.inContact = {false, false, false, false};
+  const std::string flying = scenario::failureHint(s, weight, bdf);
+  EXPECT_EQ(flying.find("impact"), std::string::npos) << flying;
+  EXPECT_NE(flying.find("all four wheels were in the air"), std::string::npos) << flying;
+
+  // An explicit method: the implicit one is the remedy.
+  scenario::IntegratorSpec rk4 = bdf;
+  rk4.method = scenario::IntegratorMethod::Rk4;
+  EXPECT_NE(scenario::failureHint(s, weight, rk4).find("--integrator bdf"), std::string::npos);
 }

@@ -1,5 +1,7 @@
 #include "scenario/run.h"
 
+#include "scenario/failure_hint.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -83,6 +85,10 @@ bool Run::tick(const std::optional<DriverInput>& input) {
         return true;
       }
       failure_ = std::string(integ::stepStatusName(rep.status)) + ": " + rep.message.c_str();
+      // A step Newton could not take: what the car was doing and what to try.
+      if (rep.status == integ::StepStatus::Diverged || (rep.status == integ::StepStatus::EvaluationFailed && rep.recoverable))
+        failure_ += failureHint(sim_.sample(), sim_.vehicle().model.totalMass() * sim_.vehicle().model.gravity.norm(),
+                                sim_.spec().integrator);
       failureTime_ = sim_.time();
       return false;
     }
