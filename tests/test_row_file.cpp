@@ -124,6 +124,36 @@ TEST(RowFile, ADeviceIsWrittenDirectly) {
   EXPECT_FALSE(fs::exists("/dev/null.partial"));
 }
 
+// A killed run leaves its rows in PATH.partial; the next run of the same
+// output moves them aside (PATH.partial.1, then .2) byte for byte instead of
+// truncating them, and says where; an empty partial file is simply reused.
+TEST(RowFile, RowsAnEarlierRunLeftAreKeptAside) {
+  TempDir t;
+  const fs::path out = t.dir / "run.csv";
+  const std::string partial = out.string() + ".partial";
+  std::ofstream(partial) << "t,x\n0,1\n0.01,2\n";  // as a SIGKILLed run leaves them
+  {
+    scenario::RowFile f(out.string());
+    EXPECT_EQ(f.keptEarlierRows(), partial + ".1");
+    f.append("t,x\n0,3\n");
+    f.close();
+  }
+  EXPECT_EQ(read(partial + ".1"), "t,x\n0,1\n0.01,2\n");
+  EXPECT_EQ(read(out), "t,x\n0,3\n");
+  std::ofstream(partial) << "t,x\n5,5\n";
+  {
+    scenario::RowFile f(out.string());
+    EXPECT_EQ(f.keptEarlierRows(), partial + ".2");  // .1 is taken: never overwritten
+    f.close();
+  }
+  EXPECT_EQ(read(partial + ".1"), "t,x\n0,1\n0.01,2\n");
+  EXPECT_EQ(read(partial + ".2"), "t,x\n5,5\n");
+  std::ofstream{partial};  // empty: nothing to keep
+  scenario::RowFile f(out.string());
+  EXPECT_TRUE(f.keptEarlierRows().empty());
+  EXPECT_FALSE(fs::exists(partial + ".3"));
+}
+
 TEST(RowFile, AFifoWithoutAReaderIsRefusedAtOnce) {
   TempDir t;
   const std::string fifo = (t.dir / "pipe").string();

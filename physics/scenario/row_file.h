@@ -12,6 +12,9 @@
 //  - A failed write (a full disk) cuts PATH.partial back to its last whole
 //    row, leaves it there and the earlier PATH as it was, and throws
 //    OutputError naming both and the system's reason; close() the same.
+//  - Rows an earlier run of the same output left in PATH.partial (killed, or
+//    stopped by a write error) are moved aside to PATH.partial.N (the first
+//    free N) and said on stderr, never truncated.
 //  - A path that exists and is no regular file (a device, a FIFO) is written
 //    directly: there is nothing to rename.
 #pragma once
@@ -51,12 +54,15 @@ class RowFile {
   // Where the rows are until close(): PATH.partial (or PATH for a device).
   const std::string& writingPath() const { return writing_; }
   static std::string partialPath(const std::string& path) { return path + ".partial"; }
+  // Where the rows an earlier, unfinished run of this output had left in
+  // PATH.partial were moved (PATH.partial.N), or empty when there were none.
+  const std::string& keptEarlierRows() const { return keptEarlierRows_; }
   long rows() const { return rows_; }
 
  private:
   void writeAll(const char* p, std::size_t n);
 
-  std::string path_, writing_;
+  std::string path_, writing_, keptEarlierRows_;
   bool renameAtClose_ = false;
   bool failed_ = false;       // a write failed: the partial file stays
   long long committed_ = 0;   // bytes of whole rows written

@@ -7,7 +7,8 @@
 # boundary when a fatal signal arrives (generic_perform_write checks for one
 # before each page), so the rows the writer was flushing at that instant may
 # end mid-row, without a newline; the rows before them are whole. (Seen once
-# in ~20 CI runs, more often on a loaded machine.)
+# in ~20 CI runs, more often on a loaded machine.) The next run of the same
+# output moves the killed run's rows aside (OUT.partial.1) instead of truncating them.
 # Usage: interrupt.sh BDFCAR SCENARIO
 bdfcar=$1; scenario=$2
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
@@ -46,3 +47,13 @@ for sig in INT TERM KILL; do
   complete_rows "$out" "$([ "$sig" = KILL ] && echo killed)"
   echo "$sig: exit $status, $(wc -l < "$out") complete rows"
 done
+# The next run of the killed run's output keeps its rows (moved aside to
+# OUT.partial.1, byte for byte) and says so; it does not truncate them.
+killed=$dir/KILL.csv
+cp "$killed.partial" "$dir/killed_rows"
+"$bdfcar" run "$scenario" --duration 0.1 --out "$killed" > "$dir/again.log" 2>&1 || { cat "$dir/again.log"; exit 1; }
+cat "$dir/again.log"
+cmp "$dir/killed_rows" "$killed.partial.1" || { echo "check: the killed run's rows were not kept"; exit 1; }
+grep -q "kept as $killed.partial.1" "$dir/again.log" || { echo "check: the kept rows were not said"; exit 1; }
+[ -s "$killed" ] && [ ! -e "$killed.partial" ] || { echo "check: the new run's file was not put in place"; exit 1; }
+echo "again: the killed run's rows kept in $(basename "$killed").partial.1"
