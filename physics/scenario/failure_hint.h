@@ -18,7 +18,6 @@ inline constexpr double kImpactLoadRatio = 3.0;
 
 // " (hint: ...)": `last` is the sample of the last accepted step, `weight` the
 // car's weight (N), `integrator` the run's settings.
-std::string failureHint(const vehicle::VehicleSample &last, double weight,
-                        const IntegratorSpec &integrator);
+std::string failureHint(const vehicle::VehicleSample& last, double weight, const IntegratorSpec& integrator);
 
-} // namespace bdfcar::scenario
+}  // namespace bdfcar::scenario
