@@ -1,8 +1,9 @@
 #include "render/obj_mesh.h"
 
-#include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "config/line_reader.h"
 #include "render/frame.h"
 
 namespace bdfcar::render {
@@ -40,13 +41,24 @@ std::size_t ObjMesh::triangles() const {
 
 // Reads the file line by line, fanning each face into triangles of the current material's part.
 ObjMesh loadObj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw RenderError("cannot open OBJ file " + path);
+  std::optional<config::LineReader> in;
+  try {
+    in.emplace(path, "OBJ file", config::kObjLines);
+  } catch (const std::runtime_error& e) {
+    throw RenderError(e.what());
+  }
   std::vector<Eigen::Vector3f> positions, normals;
   ObjMesh mesh;
   ObjPart* part = nullptr;
+  std::size_t triangles = 0;
   std::string line;
-  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+  for (;;) {
+    try {
+      if (!in->next(line)) break;
+    } catch (const std::runtime_error& e) {  // a limit of config::LineReader
+      throw RenderError(e.what());
+    }
+    const long lineNo = in->lineNumber();
     std::istringstream ls(line);
     std::string key;
     if (!(ls >> key) || key[0] == '#') continue;
@@ -70,6 +82,10 @@ ObjMesh loadObj(const std::string& path) {
         if (face.size() < 3) throw RenderError("face with fewer than 3 corners");
         for (const Corner& c : face)
           if (c.v < 0) throw RenderError("vertex index out of range");
+        triangles += face.size() - 2;
+        if (triangles > config::kMaxObjTriangles)
+          throw RenderError("more than " + std::to_string(config::kMaxObjTriangles) +
+                            " triangles (the limit for an OBJ file)");
         for (std::size_t k = 1; k + 1 < face.size(); ++k)
           for (const Corner& c : {face[0], face[k], face[k + 1]}) {
             part->corners.push_back(positions[c.v]);

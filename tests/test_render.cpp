@@ -15,6 +15,7 @@
 #include "render/frame.h"
 #include "render/gl_check.h"
 #include "render/png_queue.h"
+#include "render/obj_mesh.h"
 #include "render/png_writer.h"
 #include "render/scene.h"
 #include "render/surface_sampler.h"
@@ -425,6 +426,28 @@ TEST(RenderGeometry, ChaseCameraHeadingLagsTheCarsOnACriticallyDampedSpring) {
   seam.update(-M_PI + 0.05, dt);
   EXPECT_GT(std::remainder(seam.heading() - (M_PI - 0.05), 2 * M_PI), 0.0);  // turned through +pi, not back through 0
   EXPECT_EQ(seam.update(1.0, 0.0), 1.0);
+}
+
+// The car body's OBJ goes through config::LineReader's limits as the
+// terrain's does (tests/cli/line_limits.sh runs those through the program):
+// a line over 64 KiB is refused at its line, and a small file still reads
+// (one square, two triangles).
+TEST(ObjMesh, ReadUnderTheLineLimits) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string good = (dir / "bdfcar_square.obj").string(), bad = (dir / "bdfcar_long_line.obj").string();
+  std::ofstream(good) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  EXPECT_EQ(loadObj(good).triangles(), 2u);
+  std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3" << std::string(70000, ' ') << "\n";
+  try {
+    (void)loadObj(bad);
+    ADD_FAILURE() << "a 70,000-byte line was read";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("bdfcar_long_line.obj:4: this line of the OBJ file is longer than 64 KiB"),
+              std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "session/input_recording.h"
 #include "config/input_files.h"
+#include "config/line_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,8 +64,7 @@ long Recording::inputCount() const {
 }
 
 Recording readRecording(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ":0: cannot open the input recording");
+  config::LineReader in(path, "input recording", config::kRecordingLines);
   config::noteInputFile(path);
   Recording r;
   r.path = path;
@@ -74,12 +74,12 @@ Recording readRecording(const std::string& path) {
   auto fail = [&](const std::string& what) {
     throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": " + what);
   };
-  while (std::getline(in, line)) {
-    ++lineNo;
+  while (in.next(line)) {
+    lineNo = static_cast<int>(in.lineNumber());
     // A last line without its newline was cut off (the recorder writes
     // whole lines: a kill or a full disk stopped it): dropped, even where
     // it parses (a number cut short still reads as a number).
-    if (in.eof() && !line.empty()) {
+    if (!in.lineEnded() && !line.empty()) {
       r.droppedLine = lineNo;
       break;
     }

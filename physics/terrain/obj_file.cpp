@@ -1,10 +1,10 @@
 // A minimal OBJ reader: the vertex and face statements a terrain needs.
 #include "terrain/obj_file.h"
 #include "config/input_files.h"
+#include "config/line_reader.h"
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "terrain/terrain_file.h"
@@ -52,14 +52,13 @@ int parseCorner(const LineContext& at, const std::string& token, int vertexCount
 }  // namespace
 
 // Line by line: `v` appends a vertex, `f` a fan of triangles.
-ObjMesh readObj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw TerrainFileError(path + ": OBJ file not found or unreadable");
+ObjMesh readObj(const std::string& path) try {
+  config::LineReader in(path, "OBJ file", config::kObjLines);
   config::noteInputFile(path);
   ObjMesh mesh;
   std::string text;
-  for (int lineNumber = 1; std::getline(in, text); ++lineNumber) {
-    const LineContext at{path, lineNumber};
+  while (in.next(text)) {
+    const LineContext at{path, static_cast<int>(in.lineNumber())};
     std::istringstream tokens(text.substr(0, text.find('#')));
     std::string keyword, token;
     if (!(tokens >> keyword)) continue;
@@ -81,10 +80,16 @@ ObjMesh readObj(const std::string& path) {
         mesh.triangles.push_back({first, previous, next});
         previous = next;
       }
+      if (mesh.triangles.size() > config::kMaxObjTriangles)
+        fail(at, "more than " + std::to_string(config::kMaxObjTriangles) + " triangles (the limit for an OBJ file)");
     }
   }
   if (mesh.triangles.empty()) throw TerrainFileError(path + ": OBJ file has no faces");
   return mesh;
+} catch (const TerrainFileError&) {
+  throw;
+} catch (const std::runtime_error& e) {  // a limit of config::LineReader
+  throw TerrainFileError(e.what());
 }
 
 }  // namespace bdfcar::terrain
