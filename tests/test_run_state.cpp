@@ -166,6 +166,27 @@ TEST(Rewind, RestartIsAnAssignmentOfTheInitialState) {
   EXPECT_EQ(sim.sample().com.x(), start.com.x());
 }
 
+// A car that overturns in a drive (tests/data/bad/scenario_overturns.toml:
+// the centre of mass 0.9 m up, a fishhook at 120 km/h) goes back to a
+// snapshot with the check's own reason on the HUD's line, where `run` ends
+// with it; no row of the overturned car is recorded.
+TEST(Rewind, AnOverturnedCarGoesBackSayingSo) {
+  const std::vector<config::Setting> high{config::parseSetting("vehicle.bodies[0].com=[0.056,0.0,0.9]")};
+  scenario::ScenarioSpec spec =
+      scenario::loadScenarioFile(std::string(BDFCAR_SOURCE_DIR) + "/tests/data/bad/scenario_overturns.toml", high);
+  scenario::Simulation sim(spec);
+  scenario::RunOptions o = runOptions(true);
+  o.sample = true;
+  double lowestRoof = 1e9;
+  o.onSample = [&](const vehicle::VehicleSample& s) { lowestRoof = std::min(lowestRoof, s.chassisRotation(2, 2)); };
+  scenario::Run run(sim, o);
+  for (int i = 0; i < 400 && run.resets() == 0; ++i) ASSERT_TRUE(run.tick(std::nullopt));
+  ASSERT_GT(run.resets(), 0) << "the car did not overturn";
+  EXPECT_EQ(run.notice().rfind("the car overturned at t = ", 0), 0u) << run.notice();
+  EXPECT_NE(run.notice().find(": back to t = "), std::string::npos) << run.notice();
+  EXPECT_GE(lowestRoof, 0.0) << "a row of the car upside down was recorded";
+}
+
 TEST(Rewind, ADivergenceGoesBackToTheLastGoodSnapshotInsteadOfEndingTheRun) {
   // Semi-implicit Euler at 10 ms diverges on this car (docs/RESULTS.md 4);
   // a rewindable run absorbs each divergence and keeps going.

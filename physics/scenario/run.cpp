@@ -146,9 +146,17 @@ void Run::absorbDivergence(const integ::StepReport& rep) {
   ++resets_;
   startSegment();
   auto shown = [](double t) { return std::abs(t) < 5e-3 ? 0.0 : t; };  // no "-0.00"
-  char text[128];
-  std::snprintf(text, sizeof text, "diverged at t = %.2f s (%s), back to t = %.2f s", shown(at),
-                integ::stepStatusName(rep.status), shown(sim_.time()));
+  char text[256];
+  if (rep.status == integ::StepStatus::StateCheckFailed) {
+    // The check's own reason ("the car overturned", "wheel FL's centre went
+    // below the ground") up to its time: what a driver needs to read.
+    const std::string why = rep.message.c_str();
+    std::snprintf(text, sizeof text, "%s at t = %.2f s: back to t = %.2f s (reset starts again)",
+                  why.substr(0, why.find(" at t =")).c_str(), shown(at), shown(sim_.time()));
+  } else {
+    std::snprintf(text, sizeof text, "diverged at t = %.2f s (%s), back to t = %.2f s", shown(at),
+                  integ::stepStatusName(rep.status), shown(sim_.time()));
+  }
   notice_ = text;
   divergence_ = rep.message.c_str();
 }
