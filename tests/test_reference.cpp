@@ -31,7 +31,7 @@ struct JTurnRun {
 };
 
 JTurnRun runJTurnWith(double step, int newton, int jacobianEvery, const std::string& vehicle,
-                 scenario::IntegratorMethod method) {
+                      scenario::IntegratorMethod method, const std::string& reference = "tests/data/ref_jturn.csv") {
   scenario::ScenarioSpec s = scenario::loadScenarioFile(source("assets/scenarios/jturn.toml"));
   s.vehicleFile = source("assets/vehicles/" + vehicle);
   s.integrator.method = method;
@@ -47,7 +47,7 @@ JTurnRun runJTurnWith(double step, int newton, int jacobianEvery, const std::str
     ay.push_back(x.ay);
     roll.push_back(x.roll);
   }
-  const test::Table ref = test::readCsv(source("tests/data/ref_jturn.csv"));
+  const test::Table ref = test::readCsv(source(reference));
   EXPECT_EQ(run.result.samples.size(), ref.values.at("time_s").size());
   run.error = {test::compareColumn(ref, yaw, "yawrate_radps"), test::compareColumn(ref, ay, "ay_mps2"),
                test::compareColumn(ref, roll, "roll_rad")};
@@ -105,4 +105,23 @@ TEST(Reference, ImplicitHoldsAtTenMillisecondsWhereExplicitDoesNot) {
   EXPECT_LT(rk4Fine.error.yawRate.rmsPercent, 0.5);
   const Comparison bdf = runJTurn(0.01, 2, 200);
   EXPECT_LT(bdf.yawRate.rmsPercent, 0.25);
+}
+
+// The sedan on PAC2002 tyres as Chrono 9.0.1 evaluates them (variant
+// chrono9) against Chrono's own run with that tyre (ref_jturn_pac02.csv),
+// at 1 ms and at the paper's 10 ms setting. Measured: 0.010 / 0.016 % at
+// 1 ms, 0.022 / 0.23 % at 10 ms (yaw rate / a_y); the bounds are
+// 1 % at 1 ms and 3 % at 10 ms, held here to 1 % at both. The textbook
+// evaluation of the same file is 1.2 % away (its sign convention mirrors
+// the asymmetric coefficients, and it has camber): not Chrono's tyre.
+TEST(Reference, Pac2002JTurnMatchesChronosEvaluationOfTheSameFile) {
+  for (double step : {0.001, 0.01}) {
+    SCOPED_TRACE("step " + std::to_string(step));
+    const JTurnRun r = runJTurnWith(step, 2, 200, "sedan_pac2002_chrono9.toml", scenario::IntegratorMethod::Bdf,
+                                    "tests/data/ref_jturn_pac02.csv");
+    ASSERT_TRUE(r.result.ok) << r.result.failure;
+    EXPECT_LT(r.error.yawRate.rmsPercent, 1.0);
+    EXPECT_LT(r.error.lateral.rmsPercent, 1.0);
+    EXPECT_LT(r.error.roll.rmsPercent, 1.0);
+  }
 }

@@ -124,7 +124,7 @@ TEST(Fiala, StandstillIsFiniteAndHoldsLikeASpring) {
   }
   const double deflection = 1e-3 * 1.0;  // m of lateral travel
   EXPECT_NEAR(s.tanAlpha, deflection / 0.15, 1e-12);
-  const double damping = reference().lowSpeedDampingY * 1e-3 / reference().corneringStiffness;
+  const double damping = reference().lowSpeed.dampingY * 1e-3 / reference().corneringStiffness;
   const double expected = fialaPatchForces(reference(), 0, std::atan(deflection / 0.15 + damping), o.Fz, 0.8).Fy;
   EXPECT_NEAR(force, expected, 1e-9 * std::abs(expected));
 }

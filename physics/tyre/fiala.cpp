@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include "portable_math.h"
+#include "tyre/contact_geometry.h"
 
 namespace bdfcar::tyre {
 
@@ -54,86 +55,52 @@ PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, d
   return fialaPatchForcesTan(p, kappa, pm::tan(alpha), Fz, mu);
 }
 
-constexpr double FialaTyre::kContactSmoothing;
-constexpr double FialaTyre::kAirborneClearance;
-
-double highSpeedWeight(const FialaParams& p, double absVx) {
-  if (absVx <= p.lowSpeedBlend0) return 0.0;
-  if (absVx >= p.lowSpeedBlend1) return 1.0;
-  const double s = (absVx - p.lowSpeedBlend0) / (p.lowSpeedBlend1 - p.lowSpeedBlend0);
-  return s * s * (3.0 - 2.0 * s);
-}
-
 TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prev,
                                double h, std::optional<double> load) const {
   TyreOutput out;
   out.slipState = prev;
-  if (!g.valid) {
+  const std::optional<ContactGeometry> geo = contactGeometry(w, g, p_.unloadedRadius);
+  if (!geo) {
     out.slipState = SlipState{};
     return out;
   }
-  // Contact geometry (spec 7.1, with the local ground normal in place of e_z).
-  const Vec3& n = w.spinAxis;
   const Vec3& ez = g.normal;
-  const Vec3 nxz = n.cross(ez);
-  const double heightOfCentre = (w.centre - g.point).dot(ez);
-  if (nxz.squaredNorm() < 1e-3 || heightOfCentre <= 0) {
-    out.slipState = SlipState{};
-    return out;
-  }
-  const Vec3 xc = nxz.normalized();  // wheel heading in the ground plane
-  const Vec3 d = n.cross(xc);         // down in the wheel plane
+  const Vec3& xc = geo->xc;
+  const Vec3& yc = geo->yc;
+  const Vec3& d = geo->down;
   const double R0 = p_.unloadedRadius;
-  const Vec3 bottom = w.centre + R0 * d;
-  double delta = (g.point - bottom).dot(ez);
-  const Vec3 yc = ez.cross(xc);
-  const Vec3& v = w.centreVelocity;
-  const double vx = v.dot(xc), vy = v.dot(yc), vz = v.dot(ez);
-  // Normal load max(0, kz delta - cz vz) with the corner at zero rounded over
-  // kContactSmoothing newtons: a wheel striking a curb or landing switches
-  // contact inside a step, and Newton cannot converge across a kink. The
-  // difference is eps^2 / (4 Fz): below 0.01 N at the loads of a manoeuvre.
+  double delta = geo->delta;
+  const double vx = geo->vx, vy = geo->vy, vz = geo->vz;
   const double raw = load ? *load : p_.verticalStiffness * delta - p_.verticalDamping * vz;
-  if ((!load && delta <= -kAirborneClearance) || raw < -1e3 * kContactSmoothing) {
+  const std::optional<double> Fzo = smoothedLoad(raw, delta, load.has_value());
+  if (!Fzo) {
     out.slipState = SlipState{};
     return out;
   }
-  const double Fz = 0.5 * (raw + std::sqrt(raw * raw + kContactSmoothing * kContactSmoothing));
+  const double Fz = *Fzo;
   if (load) delta = Fz / p_.verticalStiffness;
 
   const double vsx = vx - w.spinRate * (R0 - delta);
   const double vsy = vy;
   const double absVx = std::abs(vx);
-  // Slips: exact above lowSpeedBlend1, transient below, blended in between.
-  const double beta = highSpeedWeight(p_, absVx);
+  // Slips: exact above lowSpeed.blend1, transient below, blended in between.
+  const double beta = exactSlipWeight(p_.lowSpeed, absVx);
   double kappa, tanAlpha;
   SlipState next = prev;
   if (beta < 1.0) {
-    // Backward Euler over the step from the last accepted transient slips
-    // (from the algebraic ones when the wheel has just slowed into this range).
     // The tread deflection is bounded by friction: once the patch slides it
     // stays where its force is the friction force (slips U Fz / C_kappa and,
     // for the lateral law, 3 U Fz / C_alpha, full sliding).
-    const double sx = p_.relaxationLengthX, sy = p_.relaxationLengthY;
     const double Upeak = p_.uMax * std::clamp(g.friction, 0.1, 1.0) / p_.referenceFriction;
-    const double limX = std::min(p_.maxTransientSlip, Upeak * Fz / p_.slipStiffness);
-    const double limY = std::min(p_.maxTransientSlip, 3.0 * Upeak * Fz / p_.corneringStiffness);
-    const double denom = std::max(absVx, p_.lowSpeedBlend0);
-    SlipState from = prev;
-    if (!prev.active) {
-      from.kappa = -vsx / denom;
-      from.tanAlpha = vsy / denom;
-    }
-    next.kappa = std::clamp((from.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -limX, limX);
-    next.tanAlpha = std::clamp((from.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -limY, limY);
-    next.active = true;
-    // Damping of the slip velocities enters as slip, ahead of the force law,
-    // so that the total force stays within friction (a locked wheel sliding
-    // at walking pace must not brake harder than mu Fz).
-    const double dampX = -p_.lowSpeedDampingX * vsx / p_.slipStiffness;
-    const double dampY = p_.lowSpeedDampingY * vsy / p_.corneringStiffness;
-    kappa = beta * (-vsx / denom) + (1.0 - beta) * (next.kappa + dampX);
-    tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (next.tanAlpha + dampY);
+    const double limX = std::min(p_.lowSpeed.maxTransientSlip, Upeak * Fz / p_.slipStiffness);
+    const double limY = std::min(p_.lowSpeed.maxTransientSlip, 3.0 * Upeak * Fz / p_.corneringStiffness);
+    const BlendedSlips s =
+        lowSpeedSlips(p_.lowSpeed, beta, vsx, vsy, absVx, prev, h, p_.lowSpeed.relaxationLengthX,
+                      p_.lowSpeed.relaxationLengthY, limX, limY, p_.slipStiffness, p_.corneringStiffness,
+                      std::max(absVx, p_.lowSpeed.blend0));
+    kappa = s.kappa;
+    tanAlpha = s.tanAlpha;
+    next = s.next;
   } else {
     kappa = -vsx / absVx;
     tanAlpha = vsy / absVx;

@@ -4,21 +4,16 @@
 // U(S), forces applied at the point delta above the contact point, rolling
 // resistance as a moment. A continuous (lag-free) implementation.
 //
-// Low speed (our addition, the reference model has none): the slips
-// kappa = -vsx/|vx| and tan(alpha) = vsy/|vx| are singular at standstill.
-// Below lowSpeedBlend[1] the slips blend into transient slips governed by
-//   sigma_x dkappa'/dt + |vx| kappa' = -vsx,   sigma_y dt'/dt + |vx| t' = vsy,
-// whose steady state is the exact slip at speed and which at vx = 0 become
-// tyre deflections (a stiff spring, kappa' = -integral(vsx)/sigma): a parked
-// or braked car holds on a slope without creeping, and braking to a stop
-// ends without jitter. Light damping of the slip velocities is blended in
-// below the same speed, as slip ahead of the force law so that the force
-// stays within friction. Above lowSpeedBlend[1] the law is exactly the spec's.
+// Low speed (our addition, the reference model has none): the slips blend
+// into transient slips below lowSpeed.blend1 (tyre/low_speed_slips.h), so
+// a parked or braked car holds on a slope without creeping and braking to a
+// stop ends without jitter. Above it the law is exactly the spec's.
 #pragma once
 
 #include <optional>
 
 #include "tyre/envelope.h"
+#include "tyre/low_speed_slips.h"
 #include "tyre/tyre.h"
 
 namespace bdfcar::tyre {
@@ -33,14 +28,7 @@ struct FialaParams {
   double corneringStiffness = 45836.6236;  // C_alpha, N/rad
   double uMin = 0.9, uMax = 1.0;       // friction factors (sliding, peak)
   double referenceFriction = 0.8;      // mu0 the factors were measured at
-  // Low-speed treatment (not in the reference model).
-  double relaxationLengthX = 0.05;     // sigma_x, m
-  double relaxationLengthY = 0.15;     // sigma_y, m
-  double lowSpeedBlend0 = 0.5;         // m/s: below, transient slips only
-  double lowSpeedBlend1 = 2.0;         // m/s: above, the exact Fiala slips only
-  double lowSpeedDampingX = 4.0e4;     // N s/m on the longitudinal slip velocity at standstill
-  double lowSpeedDampingY = 2.0e4;     // N s/m on the lateral slip velocity at standstill
-  double maxTransientSlip = 1.5;       // absolute cap of the transient slips (the friction limit is lower)
+  LowSpeedSlipSpec lowSpeed;           // low-speed treatment (not in the reference model)
   // The contact geometry: the road under one point, or enveloped over the patch (envelope.h).
   EnvelopeSpec contact;
 };
@@ -53,10 +41,6 @@ struct PatchForces {
 // alpha, normal load Fz and terrain friction mu (clamped to [0.1, 1]).
 PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu);
 
-// Weight of the exact slips against the transient ones at forward speed |vx|:
-// 0 below lowSpeedBlend0, 1 above lowSpeedBlend1, C1-smooth in between.
-double highSpeedWeight(const FialaParams& p, double absVx);
-
 class FialaTyre {
  public:
   explicit FialaTyre(const FialaParams& p) : p_(p) {}
@@ -65,9 +49,6 @@ class FialaTyre {
   double unloadedRadius() const { return p_.unloadedRadius; }
   double width() const { return p_.width; }
   const FialaParams& params() const { return p_; }
-  static constexpr double kContactSmoothing = 10.0;   // N, rounding of the contact corner
-  static constexpr double kAirborneClearance = 0.01;  // m above the ground: no contact at all
-
  private:
   FialaParams p_;
 };

@@ -21,7 +21,9 @@ double verticalDamping(const TyreParams& p) {
 }
 
 double peakFriction(const TyreParams& p, double mu) {
-  return std::visit([&](const auto& m) { return m.uMax * std::clamp(mu, 0.1, 1.0) / m.referenceFriction; }, p);
+  if (const auto* pac = std::get_if<Pac2002Params>(&p)) return pac2002PeakFriction(*pac, mu);
+  const FialaParams& f = std::get<FialaParams>(p);
+  return f.uMax * std::clamp(mu, 0.1, 1.0) / f.referenceFriction;
 }
 
 const EnvelopeSpec& contact(const TyreParams& p) {
@@ -35,10 +37,11 @@ double width(const TyreParams& p) {
 namespace {
 // The model of each kind of tyre data (one overload per alternative).
 FialaTyre modelFor(const FialaParams& p) { return FialaTyre(p); }
+Pac2002Tyre modelFor(const Pac2002Params& p) { return Pac2002Tyre(p); }
 }  // namespace
 
 Tyre::Tyre(const TyreParams& p)
-    : model_(std::visit([](const auto& m) { return std::variant<FialaTyre>(modelFor(m)); }, p)),
+    : model_(std::visit([](const auto& m) { return std::variant<FialaTyre, Pac2002Tyre>(modelFor(m)); }, p)),
       radius_(tyre::unloadedRadius(p)) {}
 
 TyreOutput Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,

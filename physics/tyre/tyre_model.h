@@ -7,11 +7,12 @@
 #include <variant>
 
 #include "tyre/fiala.h"
+#include "tyre/pac2002.h"
 
 namespace bdfcar::tyre {
 
 // A tyre's data as read from a vehicle file.
-using TyreParams = std::variant<FialaParams>;
+using TyreParams = std::variant<FialaParams, Pac2002Params>;
 
 double unloadedRadius(const TyreParams& p);
 double width(const TyreParams& p);
@@ -36,7 +37,7 @@ class Tyre {
   double unloadedRadius() const { return radius_; }
 
  private:
-  std::variant<FialaTyre> model_;
+  std::variant<FialaTyre, Pac2002Tyre> model_;
   double radius_;
 };
 

@@ -1,4 +1,6 @@
 #include "vehicle/vehicle_file.h"
+
+#include "tyre/pac2002_file.h"
 #include "config/input_files.h"
 #include "config/file_kind.h"
 
@@ -105,6 +107,8 @@ class Loader {
   void requireApart(Table& t, const Vec3& a, const Vec3& b, const std::string& key, const char* what);
   tyre::TyreParams readTyre(Table t);
   tyre::FialaParams readFiala(Table& t);
+  tyre::Pac2002Params readPac2002(Table& t);
+  void readLowSpeed(Table& t, tyre::LowSpeedSlipSpec& s);
   tyre::EnvelopeSpec readContact(Table& t);
 
   Table root_;
@@ -406,8 +410,50 @@ void Loader::readSprings() {
 tyre::TyreParams Loader::readTyre(Table t) {
   const std::string model = t.string("model");
   if (model == "fiala") return readFiala(t);
-  t.fail("unknown tyre model '" + model + "': expected fiala", "model");
+  if (model == "pac2002") return readPac2002(t);
+  t.fail("unknown tyre model '" + model + "': expected fiala or pac2002", "model");
   return {};
+}
+
+// A Magic Formula tyre from the .tir file it names (tyre/pac2002_file.h),
+// in the evaluation the variant picks; keys of the file bdfcar does not
+// evaluate are said once, on stderr.
+tyre::Pac2002Params Loader::readPac2002(Table& t) {
+  const std::string rel = t.string("file");
+  if (rel.empty()) t.fail("expected a .tir file name, got \"\"", "file");
+  const std::filesystem::path path = std::filesystem::path(rel).is_absolute()
+                                         ? std::filesystem::path(rel)
+                                         : (std::filesystem::path(t.folderOf("file")) / rel).lexically_normal();
+  if (const auto why = config::notARegularFile(path)) t.fail("the file '" + path.string() + "' " + *why, "file");
+  const tyre::Pac2002Variant variant = t.choice("variant", {"textbook", "chrono9"}, "textbook") == "chrono9"
+                                           ? tyre::Pac2002Variant::Chrono9
+                                           : tyre::Pac2002Variant::Textbook;
+  tyre::Pac2002File f;
+  try {
+    f = tyre::readPac2002(path.string(), variant);
+  } catch (const tyre::TirError& e) {
+    t.fail(std::string("the tyre property file: ") + e.what(), "file");
+  }
+  tyre::Pac2002Params& p = f.params;
+  p.referenceFriction = t.number("reference_friction", Dimension::None, kFriction, p.referenceFriction);
+  readLowSpeed(t, p.lowSpeed);
+  p.contact = readContact(t);
+  t.finish();
+  if (!f.ignoredKeys.empty())
+    std::fprintf(stderr, "warning: %s: keys bdfcar's PAC2002 evaluation does not read, ignored: %s\n", p.file.c_str(),
+                 f.ignoredKeys.c_str());
+  return p;
+}
+
+// The low-speed slips' settings (tyre/low_speed_slips.h), any tyre model.
+void Loader::readLowSpeed(Table& t, tyre::LowSpeedSlipSpec& s) {
+  s.relaxationLengthX = t.number("relaxation_length_x", Dimension::Length, kRelaxationLength, s.relaxationLengthX);
+  s.relaxationLengthY = t.number("relaxation_length_y", Dimension::Length, kRelaxationLength, s.relaxationLengthY);
+  s.blend0 = t.number("low_speed_blend_start", Dimension::Speed, kBlendSpeed, s.blend0);
+  s.blend1 = t.number("low_speed_blend_end", Dimension::Speed, kBlendSpeed, s.blend1);
+  t.require(s.blend1 > s.blend0, "low_speed_blend_end", "0 < low_speed_blend_start < low_speed_blend_end (m/s)");
+  s.dampingX = t.number("low_speed_damping_x", Dimension::Damping, kDamping, s.dampingX);
+  s.dampingY = t.number("low_speed_damping_y", Dimension::Damping, kDamping, s.dampingY);
 }
 
 tyre::FialaParams Loader::readFiala(Table& t) {
@@ -423,14 +469,7 @@ tyre::FialaParams Loader::readFiala(Table& t) {
   p.uMax = t.number("u_max", Dimension::None, kFriction);
   t.require(p.uMax >= p.uMin, "u_max", "0 < u_min <= u_max <= 3");
   p.referenceFriction = t.number("reference_friction", Dimension::None, kFriction, p.referenceFriction);
-  p.relaxationLengthX = t.number("relaxation_length_x", Dimension::Length, kRelaxationLength, p.relaxationLengthX);
-  p.relaxationLengthY = t.number("relaxation_length_y", Dimension::Length, kRelaxationLength, p.relaxationLengthY);
-  p.lowSpeedBlend0 = t.number("low_speed_blend_start", Dimension::Speed, kBlendSpeed, p.lowSpeedBlend0);
-  p.lowSpeedBlend1 = t.number("low_speed_blend_end", Dimension::Speed, kBlendSpeed, p.lowSpeedBlend1);
-  t.require(p.lowSpeedBlend1 > p.lowSpeedBlend0, "low_speed_blend_end",
-            "0 < low_speed_blend_start < low_speed_blend_end (m/s)");
-  p.lowSpeedDampingX = t.number("low_speed_damping_x", Dimension::Damping, kDamping, p.lowSpeedDampingX);
-  p.lowSpeedDampingY = t.number("low_speed_damping_y", Dimension::Damping, kDamping, p.lowSpeedDampingY);
+  readLowSpeed(t, p.lowSpeed);
   p.contact = readContact(t);
   t.finish();
   return p;
@@ -463,6 +502,8 @@ void Loader::readWheels() {
       const std::string tyreName = w.string("tyre");
       if (!byName.count(tyreName)) w.fail("unknown tyre '" + tyreName + "' (define it as [tyres." + tyreName + "])", "tyre");
       wh.tyre = byName.at(tyreName);
+      // A Magic Formula tyre mirrors its asymmetric coefficients on the side it was not measured on.
+      if (auto* pac = std::get_if<tyre::Pac2002Params>(&wh.tyre)) pac->mountedLeft = wh.position.back() != 'R';
       wh.spinInertia = w.number("spin_inertia", Dimension::Inertia, kSpinInertia, 0.0);
       wh.brakeTorque = w.number("brake_torque", Dimension::Torque, kTorque, 0.0);
       wh.driven = w.boolean("driven", false);
