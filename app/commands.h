@@ -18,6 +18,7 @@ void addVersionCommand(CLI::App& app, CommandList& commands);
 // What `bdfcar version` and `bdfcar --version` print; returns 0.
 int printVersion();
 void addInfoCommand(CLI::App& app, CommandList& commands);
+void addKcCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
 void addSweepCommand(CLI::App& app, CommandList& commands);
 void addReportCommand(CLI::App& app, CommandList& commands);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   CommandList commands;
   addVersionCommand(app, commands);
   addInfoCommand(app, commands);
+  addKcCommand(app, commands);
   addRunCommand(app, commands);
   addSweepCommand(app, commands);
   addReportCommand(app, commands);

@@ -1,6 +1,7 @@
 #include "session/plots.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -42,6 +43,25 @@ std::string plotDrive(const std::string& csv, const std::string& outDir,
     s << "unset xrange\nunset yrange\nset title '" << title << ": lateral acceleration'\n";
     s << "set xlabel 'time (s)'\nset ylabel 'a_y (m/s^2)'\n";
     s << "plot '" << csv << "' using 1:10 with lines lw 2 title 'a_y (chassis y)'\n";
+  }
+  const std::string cmd = "gnuplot '" + script + "' 2>&1";
+  if (std::system(cmd.c_str()) != 0) return "gnuplot failed on " + script;
+  return "";
+}
+
+std::string plotCsvColumns(const std::vector<CsvPlot>& plots, const std::string& script) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) return "gnuplot is not installed: no plots";
+  {
+    std::ofstream s(script);
+    s << "set datafile separator ','\nset datafile columnheaders\nset terminal pngcairo noenhanced size 1000,600 "
+         "font ',11'\nset grid\nset key outside right\n";
+    for (const CsvPlot& p : plots) {
+      s << "set output '" << p.png << "'\nset title '" << p.title << "'\nset xlabel '" << p.x << "'\nset ylabel ''\nplot ";
+      for (size_t k = 0; k < p.ys.size(); ++k)
+        s << (k ? ", " : "") << "'" << p.csv << "' using (column('" << p.x << "')):(column('" << p.ys[k]
+          << "')) with lines lw 2 title '" << p.ys[k] << "'";
+      s << "\n";
+    }
   }
   const std::string cmd = "gnuplot '" + script + "' 2>&1";
   if (std::system(cmd.c_str()) != 0) return "gnuplot failed on " + script;

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scenario/iso3888_course.h"
 
@@ -14,5 +15,15 @@ namespace bdfcar::app {
 // missing or failing): plots are a convenience, never a reason to fail a run.
 std::string plotDrive(const std::string& telemetryCsv, const std::string& outDir,
                       const std::optional<scenario::Iso3888Course>& course, const std::string& title);
+
+// A line plot of CSV columns, by their header names, against one of them.
+struct CsvPlot {
+  std::string csv, png, title, x;
+  std::vector<std::string> ys;
+};
+
+// Writes the plots through one gnuplot script (`script`, kept beside them).
+// Returns "" on success, else why not, as plotDrive.
+std::string plotCsvColumns(const std::vector<CsvPlot>& plots, const std::string& script);
 
 }  // namespace bdfcar::app

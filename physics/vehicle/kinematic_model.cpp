@@ -13,6 +13,7 @@
 #include "multibody/multibody_dae.h"
 #include "vehicle/derivation_cache.h"
 #include "vehicle/equilibrium.h"
+#include "vehicle/linkage_sweep.h"
 #include "vehicle/mass_moments.h"
 #include "vehicle/motion_ratio.h"
 #include "portable_math.h"
@@ -23,128 +24,6 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-
-// The linkage held by its chassis at design, with each wheel centre moved by
-// s vertically relative to the chassis and the rack at r: Newton on the loop
-// constraints plus one travel equation per wheel over the suspension
-// coordinates (all but the chassis, the rack and the wheel spins).
-class LinkageSweep {
- public:
-  explicit LinkageSweep(const Vehicle& v) : v_(v), m_(v.model), d_(mb::makeData(v.model)) {
-    for (const mb::CutJoint& c : m_.cutJoints)
-      if (c.type != mb::CutJointType::Driver)
-        for (int r = 0; r < c.rows; ++r) rows_.push_back(c.row + r);
-    for (size_t i = 0; i < m_.bodies.size(); ++i) {
-      const int b = static_cast<int>(i);
-      bool spin = false;
-      for (const WheelLayout& w : v.layout.wheels) spin |= w.spindle == b;
-      if (b == v.layout.chassis || b == v.layout.rack || b == v.layout.engine || spin) continue;
-      for (int k = 0; k < m_.bodies[i].nv; ++k) free_.push_back(m_.bodies[i].vIndex + k);
-    }
-    if (static_cast<int>(free_.size()) != static_cast<int>(rows_.size()) + 4)
-      throw mb::ModelError("kinematic model: the suspension has " + std::to_string(free_.size()) +
-                           " coordinates and " + std::to_string(rows_.size()) +
-                           " loop equations; a sweep by wheel travel needs exactly one free motion per wheel");
-    design_ = designPositions(v);
-    std::string msg;
-    mb::MultibodyDae dae(m_);
-    const Eigen::VectorXd drawn = design_;
-    if (!assemble(v, dae, 0.0, design_, msg)) throw mb::ModelError("kinematic model: the linkage does not assemble: " + msg);
-    if (const auto far = farFromDesign(v, drawn, design_)) throw mb::ModelError(*far);
-    mb::updatePositions(m_, design_, d_);
-    for (int w = 0; w < 4; ++w) z0_[w] = wheelCentre(w).z();
-  }
-
-  const VectorXd& design() const { return design_; }
-  int freeCount() const { return static_cast<int>(free_.size()); }
-
-  // Solves from q (updated in place); false if Newton does not converge.
-  bool solve(double s, double r, VectorXd& q) {
-    q(v_.layout.rackQ) = r;
-    VectorXd res(rows()), dx;
-    for (int it = 0; it < 25; ++it) {
-      residual(q, s, res);
-      if (!res.allFinite()) return false;
-      if (res.lpNorm<Eigen::Infinity>() < 1e-12) return true;
-      if (it % 4 == 0) {
-        jacobian(q, s);
-        lu_.compute(J_);
-      }
-      dx = lu_.solve(res);
-      step(q, -dx, q);
-    }
-    residual(q, s, res);
-    return res.lpNorm<Eigen::Infinity>() < 1e-10;
-  }
-
-  // Suspension-coordinate direction of a unit travel of wheel w alone, at q.
-  VectorXd travelDirection(const VectorXd& q, int w) {
-    jacobian(q, 0.0);
-    VectorXd e = VectorXd::Zero(rows());
-    e(static_cast<int>(rows_.size()) + w) = 1.0;
-    const VectorXd dx = J_.colPivHouseholderQr().solve(e);
-    VectorXd full = VectorXd::Zero(m_.nv);
-    for (size_t j = 0; j < free_.size(); ++j) full(free_[j]) = dx(j);
-    return full;
-  }
-
-  // Positions at q, in data() (the chassis is at the world origin, unrotated, but for its height).
-  mb::Data& at(const VectorXd& q) {
-    mb::updatePositions(m_, q, d_);
-    return d_;
-  }
-  Vec3 wheelCentre(int w) const {
-    const int sp = v_.layout.wheels[w].spindle;
-    const int ch = v_.layout.chassis;
-    return d_.R[ch].transpose() * (mb::pointPosition(d_, sp, m_.bodies[sp].inChild.origin) - d_.p[ch]);
-  }
-  double designWheelZ(int w) const { return z0_[w]; }
-
- private:
-  int rows() const { return static_cast<int>(rows_.size()) + 4; }
-
-  void residual(const VectorXd& q, double s, VectorXd& out) {
-    mb::updatePositions(m_, q, d_);
-    mb::constraintPositions(m_, q, d_);
-    for (size_t k = 0; k < rows_.size(); ++k) out(k) = d_.phi(rows_[k]);
-    for (int w = 0; w < 4; ++w) out(static_cast<int>(rows_.size()) + w) = wheelCentre(w).z() - z0_[w] - s;
-  }
-
-  void step(const VectorXd& q, const VectorXd& dx, VectorXd& out) {
-    VectorXd full = VectorXd::Zero(m_.nv);
-    for (size_t j = 0; j < free_.size(); ++j) full(free_[j]) = dx(j);
-    VectorXd next(m_.nq);
-    mb::retract(m_, q, full, next);
-    out = next;
-  }
-
-  // Central differences over the suspension coordinates.
-  void jacobian(const VectorXd& q, double s) {
-    const int n = rows();
-    J_.resize(n, static_cast<int>(free_.size()));
-    VectorXd rp(n), rm(n), qp(m_.nq), qm(m_.nq), e = VectorXd::Zero(static_cast<int>(free_.size()));
-    const double h = 1e-7;
-    for (size_t j = 0; j < free_.size(); ++j) {
-      e.setZero();
-      e(j) = h;
-      step(q, e, qp);
-      step(q, -e, qm);
-      residual(qp, s, rp);
-      residual(qm, s, rm);
-      J_.col(j) = (rp - rm) / (2 * h);
-    }
-  }
-
-  const Vehicle& v_;
-  const mb::Model& m_;
-  mb::Data d_;
-  std::vector<int> rows_, free_;
-  VectorXd design_;
-  std::array<double, 4> z0_{};
-  MatrixXd J_;
-  Eigen::PartialPivLU<MatrixXd> lu_;
-};
 
 // Angles (psi, phi, theta) of M = Rz(psi) Rx(phi) Ry(theta).
 Vec3 zxyAngles(const Mat3& M) {

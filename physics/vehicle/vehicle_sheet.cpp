@@ -68,10 +68,17 @@ VehicleSheet vehicleSheet(const Vehicle& linkage, const PlanarDerivation& p) {
   } else {
     for (int i = 0; i < 50; ++i) (frontAngles(p.vehicle, 0.5 * (lo + hi))[0] < inner ? lo : hi) = 0.5 * (lo + hi);
     const std::array<double, 2> a = frontAngles(p.vehicle, 0.5 * (lo + hi));
-    const double outerAckermann = pm::atan(s.wheelbase / (s.wheelbase / pm::tan(a[0]) + s.track[0]));
-    s.ackermann = 100 * (a[0] - a[1]) / (a[0] - outerAckermann);
+    s.ackermann = ackermannPercent(a[0], a[1], s.wheelbase, s.track[0]);
   }
   return s;
+}
+
+double ackermannOuter(double inner, double wheelbase, double track) {
+  return pm::atan(wheelbase / (wheelbase / pm::tan(inner) + track));
+}
+
+double ackermannPercent(double inner, double outer, double wheelbase, double track) {
+  return 100 * (inner - outer) / (inner - ackermannOuter(inner, wheelbase, track));
 }
 
 std::string describe(const VehicleSheet& s) {

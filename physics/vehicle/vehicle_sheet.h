@@ -34,4 +34,10 @@ VehicleSheet vehicleSheet(const Vehicle& linkage, const PlanarDerivation& planar
 
 std::string describe(const VehicleSheet& s);
 
+// Ackermann geometry: the outer road-wheel angle whose turn centre is the
+// inner one's on the rear axle's line, and the percentage of it a steering
+// gives (100 = Ackermann, 0 = parallel); angles in rad, inner > 0.
+double ackermannOuter(double inner, double wheelbase, double track);
+double ackermannPercent(double inner, double outer, double wheelbase, double track);
+
 }  // namespace bdfcar::vehicle
