@@ -267,6 +267,7 @@ int runReport(const ReportArgs& a) {
   // Each section by name (--only runs some of them, e.g. while working on one).
   const std::vector<std::pair<std::string, std::function<void()>>> sections = {
       {"reference", [&] { referenceSection(md, a, imageDir); }},
+      {"tyres", [&] { tyreSection(md, (fs::path(a.reference).parent_path() / "ref_jturn_pac02.csv").string()); }},
       {"topologies", [&] { topologySection(md); }},
       {"tables", [&] { gridSection(md); }},
       {"explicit", [&] { explicitSection(md, a); }},
@@ -301,9 +302,9 @@ void addReportCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--reference", a->reference, "Reference J-turn CSV")->check(CLI::ExistingFile);
   cmd->add_option("--repeats", a->repeats, "Runs per timing (median)")->check(CLI::Range(1, 100));
   cmd->add_option("--only", a->only,
-                  "Only these sections (reference, topologies, tables, explicit, hard, speed, fidelity, "
+                  "Only these sections (reference, tyres, topologies, tables, explicit, hard, speed, fidelity, "
                   "standard, sweep, work-precision, survival): a partial file, for working on one")
-      ->check(CLI::IsMember({"reference", "topologies", "tables", "explicit", "hard", "speed", "fidelity",
+      ->check(CLI::IsMember({"reference", "tyres", "topologies", "tables", "explicit", "hard", "speed", "fidelity",
                              "standard", "sweep", "powertrain", "work-precision", "survival"}));
   commands.push_back({cmd, [a] { return reportErrors([&] { return runReport(*a); }); }});
 }

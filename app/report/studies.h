@@ -65,6 +65,8 @@ void writePlot(const std::string& dataPath, const std::string& png, const std::s
 // converged at 1 ms on smooth and hard manoeuvres (images under imageDir).
 void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir);
 
+// Section of RESULTS.md: the sedan on PAC2002 tyres against Chrono's run with them and its own converged runs.
+void tyreSection(std::ostream& md, const std::string& pac02Reference);
 // Section of RESULTS.md: the reference sedan's vehicle sheet and standard-test metrics.
 void standardTestsSection(std::ostream& md);
 // The drivable sedan's powertrain: gears, a full-throttle run, its cost per step.
