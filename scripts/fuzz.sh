@@ -12,7 +12,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BDFCAR_FUZZ_BUILD_DIR:-$root/build-fuzz}
 target=${1:-all}
 runs=${2:-1000000}
-all_targets=(fuzz_vehicle fuzz_scenario fuzz_terrain fuzz_road fuzz_obj fuzz_mapping)
+all_targets=(fuzz_vehicle fuzz_scenario fuzz_terrain fuzz_road fuzz_obj fuzz_mapping fuzz_tir)
 
 # The main packages, then clang and libFuzzer (a separate list).
 "$root/scripts/install-deps.sh"
@@ -47,6 +47,7 @@ seed() {
       head -n 80 "$root/assets/models/sedan_body.obj" >"$dir/sedan_head.obj"
       printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1/1/1 2/2/2 3/3/3\nf -4 -2 -1\n' >"$dir/seed_quad.obj" ;;
     fuzz_mapping) cp "$root"/assets/input/*.toml "$dir"/ ;;
+    fuzz_tir) cp "$root"/assets/tyres/*.tir "$dir"/ ;;
   esac
   # The loaders' own bad-input tests (tests/data/bad) make good seeds too.
   local bad="$root/tests/data/bad"
@@ -55,6 +56,7 @@ seed() {
     fuzz_scenario) cp "$bad"/scenario_*.toml "$dir"/ 2>/dev/null || true ;;
     fuzz_terrain) cp "$bad"/terrain_*.toml "$dir"/ 2>/dev/null || true ;;
     fuzz_obj) find "$bad" -maxdepth 1 -name '*.obj' -size -8k -exec cp {} "$dir"/ \; ;;
+    fuzz_tir) find "$bad/parts" -maxdepth 1 -name '*.tir' -exec cp {} "$dir"/ \; ;;
   esac
 }
 

@@ -270,6 +270,8 @@ TEST(TirFile, BadFilesNameTheLineAndKey) {
   expectError(with("USE_MODE                 = 4", "USE_MODE = 2"), "key 'USE_MODE' in [MODEL]: USE_MODE 2 is not evaluated");
   expectError(with("LENGTH                   ='meter'", "LENGTH = 'furlong'"), "bad.tir:5: key 'LENGTH' in [UNITS]: unknown unit 'furlong'");
   expectError(with("PKY1                     = -21.92", "PKY1 = 21.92"), "expected a negative cornering stiffness factor");
+  // Coefficients that pass every single check but overflow together: the sampled curves are refused.
+  expectError(with("PKX3                     = 0.21253", "PKX3 = 800"), "the coefficients give a non-finite force at Fz = ");
 }
 
 }  // namespace

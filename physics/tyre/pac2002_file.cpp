@@ -1,6 +1,8 @@
 #include "tyre/pac2002_file.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace bdfcar::tyre {
@@ -112,6 +114,28 @@ Pac2002File readPac2002(const TirFile& tir, Pac2002Variant variant) {
             "a positive slip stiffness PKX1 + PKX2 dfz at every load from 0.1 to 2.5 FNOMIN");
   }
   if (chrono) p.c.QSY1 = p.c.QSY2 = 0;  // Chrono's reader zeroes them (tyre-pac2002.md 1.3)
+  // Whatever passed the checks above must give finite forces within a few
+  // times the load everywhere a tyre goes: a grid of loads, slips and
+  // camber (an overflowing exponent or a coefficient of 1e300 is refused
+  // here, not met as a NaN in a run).
+  for (double share : {0.1, 1.0, 2.5})
+    for (double kappa : {-1.0, -0.1, 0.0, 0.1, 1.0})
+      for (double alpha : {-1.0, -0.1, 0.0, 0.1, 1.0})
+        for (double gamma : {-0.1, 0.0, 0.1}) {
+          const double Fz = share * p.nominalLoad;
+          const MagicFormulaForces f = magicFormula(p, kappa, alpha, chrono ? 0.0 : gamma, Fz, p.referenceFriction, 10.0);
+          const bool finite = std::isfinite(f.Fx) && std::isfinite(f.Fy) && std::isfinite(f.Mz) &&
+                              std::isfinite(f.Mx) && std::isfinite(f.My);
+          if (!finite || std::abs(f.Fx) > 5 * Fz || std::abs(f.Fy) > 5 * Fz || std::abs(f.Mz) > 5 * Fz * p.unloadedRadius) {
+            char where[160];
+            std::snprintf(where, sizeof where, "at Fz = %.0f N, kappa = %g, alpha = %g rad, gamma = %g rad", Fz, kappa,
+                          alpha, gamma);
+            tir.fail("LATERAL_COEFFICIENTS", "(the curves)",
+                     std::string("the coefficients give ") + (finite ? "a force beyond 5 times the load" : "a non-finite force") +
+                         " " + where + " (Fx " + std::to_string(f.Fx) + " N, Fy " + std::to_string(f.Fy) + " N, Mz " +
+                         std::to_string(f.Mz) + " N m)");
+          }
+        }
 
   // What the file has that bdfcar does not evaluate.
   std::set<std::string> known(kReadKeys);
