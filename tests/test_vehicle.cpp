@@ -106,6 +106,25 @@ TEST(VehicleFile, SedanIsTheReferenceVehicleJointForJoint) {
   EXPECT_NEAR(l.inertia(0, 0), r.inertia(0, 0), 1e-12);
 }
 
+// The strut's top-mount axes written from hardpoints ("normal(...)" and a
+// cross with the strut) are the ones docs/reference-vehicle.md 4.2 gives as
+// numbers (5 digits), on the left and mirrored on the right.
+TEST(VehicleFile, DirectionsFromHardpointsAreTheReferencesAxes) {
+  const vehicle::VehicleSpec spec = vehicle::loadVehicleFile(asset("vehicles/sedan.toml"));
+  const Eigen::Vector3d u(-0.52712, -0.81691, -0.23412), v(0.84120, -0.54067, -0.00743);
+  int found = 0;
+  for (const auto& b : spec.bodies) {
+    if (b.name != "strut_FL" && b.name != "strut_FR") continue;
+    const Eigen::Vector3d m = b.name == "strut_FL" ? Eigen::Vector3d(1, 1, 1) : Eigen::Vector3d(1, -1, 1);
+    EXPECT_LT((b.joint.axisParent - m.cwiseProduct(u)).norm(), 1e-5) << b.name << ": " << b.joint.axisParent.transpose();
+    // The child axis is a normal computed from the mirrored points: its sign may flip with the side.
+    EXPECT_LT(std::min((b.joint.axisChild - m.cwiseProduct(v)).norm(), (b.joint.axisChild + m.cwiseProduct(v)).norm()), 1e-5)
+        << b.name << ": " << b.joint.axisChild.transpose();
+    ++found;
+  }
+  EXPECT_EQ(found, 2);
+}
+
 TEST(Assembly, ClosesTheLoopsFromADisturbedConfiguration) {
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/paper.toml")));
   mb::MultibodyDae dae(v.model);

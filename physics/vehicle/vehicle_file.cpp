@@ -128,22 +128,37 @@ void Loader::requireApart(Table& t, const Vec3& a, const Vec3& b, const std::str
 }
 
 Vec3 Loader::vectorValue(Table& t, const std::string& key, const std::string& text, const Side& s) {
+  auto at = [&](std::string name) -> Vec3 {
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    if (!points_.count(name)) t.fail("unknown point '" + name + "' (define it in [points])", key);
+    return s.M * points_.at(name);
+  };
+  // "normal(A, B, C)": the normal of the plane through three points, (B - A) x (C - A)
+  // (from the mirrored points on a mirrored side, as the joints' geometry is).
+  if (text.rfind("normal(", 0) == 0 && text.back() == ')') {
+    const std::string inner = text.substr(7, text.size() - 8);
+    const auto c1 = inner.find(','), c2 = inner.find(',', c1 == std::string::npos ? c1 : c1 + 1);
+    if (c1 == std::string::npos || c2 == std::string::npos || inner.find(',', c2 + 1) != std::string::npos)
+      t.fail("expected \"normal(A, B, C)\" naming three points, got \"" + text + "\"", key);
+    const Vec3 a = at(inner.substr(0, c1)), b = at(inner.substr(c1 + 1, c2 - c1 - 1)), c = at(inner.substr(c2 + 1));
+    return (b - a).cross(c - a);
+  }
   // "A->B": from point A to point B.
   const auto arrow = text.find("->");
-  if (arrow == std::string::npos) t.fail("expected a vector [x, y, z] or \"A->B\" between two points, got \"" + text + "\"", key);
-  const std::string a = text.substr(0, arrow), b = text.substr(arrow + 2);
-  for (const std::string& p : {a, b})
-    if (!points_.count(p)) t.fail("unknown point '" + p + "' (define it in [points])", key);
-  return s.M * (points_.at(b) - points_.at(a));
+  if (arrow == std::string::npos)
+    t.fail("expected a vector [x, y, z], \"A->B\" between two points or \"normal(A, B, C)\", got \"" + text + "\"", key);
+  return at(text.substr(arrow + 2)) - at(text.substr(0, arrow));
 }
 
-// A direction: [x, y, z], "A->B" between two points, or { cross = ["A->B", "C->D"] }.
+// A direction: [x, y, z], "A->B" between two points, "normal(A, B, C)" of
+// the plane through three, or { cross = [D1, D2] } of two such strings.
 Vec3 Loader::vectorOf(Table& t, const std::string& key, const Side& s) {
   if (t.isString(key)) return vectorValue(t, key, t.string(key), s);
   if (t.isTable(key)) {
     Table c = t.table(key);
     const std::vector<std::string> f = c.strings("cross");
-    c.require(f.size() == 2, "cross", "two vectors [\"A->B\", \"C->D\"]");
+    c.require(f.size() == 2, "cross", "two vectors [\"A->B\", \"C->D\"] (or \"normal(A, B, C)\")");
     const Vec3 r = vectorValue(c, "cross", f[0], s).cross(vectorValue(c, "cross", f[1], s));
     c.finish();
     return r;
