@@ -9,6 +9,7 @@
 
 #include "cli_errors.h"
 #include "commands.h"
+#include "kc_summary.h"
 #include "config/units.h"
 #include "scenario/row_file.h"
 #include "session/plots.h"
@@ -72,62 +73,10 @@ std::string plotTables(const std::filesystem::path& dir) {
   return plotCsvColumns(plots, (dir / "plots.gp").string());
 }
 
-// A row of four corner values, or '-' where there is none.
-void cornerRow(const char* label, const vehicle::KcResult& r, double (*value)(const vehicle::KcCorner&), const char* format) {
-  std::printf("  %-44s", label);
-  for (const vehicle::KcCorner& c : r.corner) {
-    const double x = value(c);
-    if (std::isfinite(x))
-      std::printf(format, x);
-    else
-      std::printf("%10s", "-");
-  }
-  std::printf("\n");
-}
-
-void printSummary(const vehicle::Vehicle& v, const std::string& path, const vehicle::KcResult& r) {
-  std::printf("K&C rig: %s (%s)\n", v.spec.name.c_str(), path.c_str());
-  std::printf("  chassis held at design, the ground %.4f m under its frame; sweeps: parallel travel +-%.0f mm, "
-              "body roll +-%.1f deg, full steer\n",
-              v.spec.designHeight, 1000 * r.travelRange, radToDeg(r.rollRange));
-  std::printf("  wheelbase %.3f m, centre of mass %.3f m above the ground\n\n", r.wheelbase, r.comHeight);
-  std::printf("  %-44s%10s%10s%10s%10s\n", "at design (kinematics only)", "FL", "FR", "RL", "RR");
-  using C = const vehicle::KcCorner&;
-  cornerRow("toe (deg, + in)", r, [](C c) { return radToDeg(c.toe); }, "%10.3f");
-  cornerRow("camber (deg, + top out)", r, [](C c) { return radToDeg(c.camber); }, "%10.3f");
-  cornerRow("bump steer (deg/m of toe)", r, [](C c) { return radToDeg(c.bumpSteer); }, "%10.2f");
-  cornerRow("camber gain (deg/m)", r, [](C c) { return radToDeg(c.camberGain); }, "%10.2f");
-  cornerRow("roll steer (deg of toe/deg of roll)", r, [](C c) { return c.rollSteer; }, "%10.4f");
-  cornerRow("roll camber (deg to ground/deg of roll)", r, [](C c) { return c.rollCamber; }, "%10.4f");
-  cornerRow("half-track change (mm/m, + outward)", r, [](C c) { return 1000 * c.halfTrackChange; }, "%10.1f");
-  cornerRow("wheel rate (N/m, springs)", r, [](C c) { return c.wheelRate; }, "%10.0f");
-  cornerRow("caster (deg, + top rearward)", r, [](C c) { return radToDeg(c.caster); }, "%10.3f");
-  cornerRow("kingpin inclination (deg, + top inboard)", r, [](C c) { return radToDeg(c.kingpinInclination); }, "%10.3f");
-  cornerRow("scrub radius (mm, + axis inboard)", r, [](C c) { return 1000 * c.scrubRadius; }, "%10.1f");
-  cornerRow("mechanical trail (mm, + axis ahead)", r, [](C c) { return 1000 * c.trail; }, "%10.1f");
-  std::printf("  motion ratios (dL/ds, spring-damper length per wheel travel):");
-  for (const vehicle::KcCorner& c : r.corner)
-    for (size_t k = 0; k < c.springNames.size(); ++k) std::printf(" %s %.4f", c.springNames[k].c_str(), c.motionRatio[k]);
-  std::printf("\n\n  %-44s%10s%10s\n", "per axle", "front", "rear");
-  std::printf("  %-44s%10.4f%10.4f\n", "track (m)", r.axle[0].track, r.axle[1].track);
-  std::printf("  %-44s%10.1f%10.1f\n", "track change (mm/m of parallel travel)", 1000 * r.axle[0].trackChange,
-              1000 * r.axle[1].trackChange);
-  std::printf("  %-44s%10.4f%10.4f\n", "roll centre (m above the ground)", r.axle[0].rollCentre, r.axle[1].rollCentre);
-  std::printf("  %-44s%10.3f%10.3f\n", "roll-centre migration (m/m of travel)", r.axle[0].rollCentreMigration,
-              r.axle[1].rollCentreMigration);
-  std::printf("  %-44s%10.4f%10.4f\n", "roll steer (deg/deg, + toward the rising side)", r.axle[0].rollSteer,
-              r.axle[1].rollSteer);
-  std::printf("\n  anti-dive (front, braking, %.0f %% of the brake torque front): %.1f %%\n", 100 * r.brakeFront,
-              r.antiDive);
-  std::printf("  anti-squat (rear, driving): %.1f %%\n", r.antiSquat);
-  std::printf("  steering ratio %.2f:1 (wheels at design height); Ackermann %.0f %% at 10 deg inner road-wheel angle\n",
-              r.steeringRatio, r.ackermann);
-}
-
 int runKc(const std::string& path, const std::string& out) {
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path));
   const vehicle::KcResult r = vehicle::runKcRig(v);
-  printSummary(v, path, r);
+  std::fputs(kcSummary(v, path, r).c_str(), stdout);
   if (out.empty()) return kExitOk;
   const std::filesystem::path dir(out);
   std::filesystem::create_directories(dir);

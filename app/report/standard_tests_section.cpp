@@ -10,17 +10,21 @@
 
 namespace bdfcar::app {
 
-void standardTestsSection(std::ostream& md) {
-  const vehicle::Vehicle sedan = vehicle::buildVehicle(vehicle::loadVehicleFile(asset("vehicles/sedan.toml")));
-  md << "## 5e. The reference sedan: vehicle sheet and standard tests\n\n"
-     << "`bdfcar info assets/vehicles/sedan.toml` prints the sheet, derived from the linkage (no figure entered "
-     << "by hand; the steering ratio is the reference data's: 30 deg of steering wheel at full input):\n\n```\n"
-     << vehicle::describe(vehicle::vehicleSheet(sedan)) << "```\n\n"
-     << "The shipped standard tests (definitions and sources: docs/STANDARD_TESTS.md), at the paper's setting:\n\n";
+void standardTestsSection(std::ostream& md, const std::string& vehicleFile) {
+  const vehicle::Vehicle car = vehicle::buildVehicle(vehicle::loadVehicleFile(vehicleFile));
+  const bool sedan = vehicleFile == asset("vehicles/sedan.toml");
+  md << "## 5e. " << (sedan ? std::string("The reference sedan") : car.spec.name) << ": vehicle sheet and standard tests\n\n"
+     << "`bdfcar info " << (sedan ? std::string("assets/vehicles/sedan.toml") : vehicleFile)
+     << "` prints the sheet, derived from the linkage (no figure entered by hand"
+     << (sedan ? "; the steering ratio is the reference data's: 30 deg of steering wheel at full input" : "")
+     << "):\n\n```\n" << vehicle::describe(vehicle::vehicleSheet(car)) << "```\n\n"
+     << "The shipped standard tests (definitions and sources: docs/STANDARD_TESTS.md), at the paper's setting"
+     << (sedan ? "" : ", on this vehicle") << ":\n\n";
   for (const char* file : {"standard/iso7401_step_steer_80.toml", "standard/fmvss126_sine_with_dwell_80.toml",
                            "standard/iso4138_constant_steer.toml", "standard/iso4138_constant_radius_40m.toml",
                            "standard/iso3888_2_obstacle_avoidance_60.toml"}) {
-    const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
+    scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
+    if (!sedan) spec.vehicleFile = vehicleFile;
     scenario::Simulation sim(spec);
     const scenario::RunResult r = scenario::runScenario(sim, {});
     if (!r.ok) {
@@ -33,13 +37,15 @@ void standardTestsSection(std::ostream& md) {
       for (const scenario::Metric& m : scenario::runMetrics(r))
         if (m.name.rfind("course_", 0) == 0 || m.name == "cones_hit") md << "| " << m.name << " | " << m.value << " |\n";
       md << "\n";
-      command(md, std::string("assets/scenarios/") + file + " --metrics metrics.csv");
+      command(md, std::string("assets/scenarios/") + file + (sedan ? "" : " --vehicle " + vehicleFile) +
+                      " --metrics metrics.csv");
       continue;
     }
     const scenario::StandardTestReport report = scenario::standardTestReport(
         spec.standardTest, scenario::timeHistory(r, sim.vehicle()));
     md << "```\n" << report.text << "```\n\n";
-    command(md, std::string("assets/scenarios/") + file + " --metrics metrics.json");
+    command(md, std::string("assets/scenarios/") + file + (sedan ? "" : " --vehicle " + vehicleFile) +
+                    " --metrics metrics.json");
   }
 }
 

@@ -67,8 +67,10 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
 
 // Section of RESULTS.md: the sedan on PAC2002 tyres against Chrono's run with them and its own converged runs.
 void tyreSection(std::ostream& md, const std::string& pac02Reference);
-// Section of RESULTS.md: the reference sedan's vehicle sheet and standard-test metrics.
-void standardTestsSection(std::ostream& md);
+// Section of RESULTS.md: a vehicle's sheet and standard-test metrics (the reference sedan's by default).
+void standardTestsSection(std::ostream& md, const std::string& vehicleFile);
+// Section of RESULTS.md: a vehicle's K&C numbers (shownPath: the file as the command line would name it).
+void kcSection(std::ostream& md, const std::string& vehicleFile, const std::string& shownPath);
 // The drivable sedan's powertrain: gears, a full-throttle run, its cost per step.
 void powertrainSection(std::ostream& md, int repeats);
 // The shipped sweep's summary and plots (images under imageDir).
