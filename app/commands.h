@@ -19,6 +19,7 @@ void addVersionCommand(CLI::App& app, CommandList& commands);
 int printVersion();
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addKcCommand(CLI::App& app, CommandList& commands);
+void addTyreCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
 void addSweepCommand(CLI::App& app, CommandList& commands);
 void addReportCommand(CLI::App& app, CommandList& commands);

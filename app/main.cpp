@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   addVersionCommand(app, commands);
   addInfoCommand(app, commands);
   addKcCommand(app, commands);
+  addTyreCommand(app, commands);
   addRunCommand(app, commands);
   addSweepCommand(app, commands);
   addReportCommand(app, commands);

@@ -94,6 +94,18 @@ TEST(FormatDocs, EveryKeyTheLoadersReadIsDocumented) {
     ASSERT_TRUE(docOf.count(document)) << document << " was read but is not a scenario, vehicle or terrain";
     keys[docOf[document]].insert(key);
   }
+  // Every top-level key of a vehicle file has its row in the Layout table.
+  {
+    const std::string text = readText(kSource / "docs/VEHICLES.md");
+    const auto from = text.find("## Layout of a file"), to = text.find("\n## ", from + 1);
+    ASSERT_NE(from, std::string::npos) << "docs/VEHICLES.md has no Layout section";
+    const std::string layout = text.substr(from, to - from);
+    for (const std::string& k : keys["docs/VEHICLES.md"]) {
+      if (k.find_first_of(".[") != std::string::npos) continue;
+      EXPECT_NE(layout.find("| `" + k + "` |"), std::string::npos)
+          << "docs/VEHICLES.md's Layout table has no row for the top-level key `" << k << "`";
+    }
+  }
   for (const auto& [doc, names] : keys) {
     const std::string text = readText(kSource / doc);
     EXPECT_FALSE(text.empty()) << doc << " is missing";

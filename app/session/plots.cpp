@@ -58,7 +58,7 @@ std::string plotCsvColumns(const std::vector<CsvPlot>& plots, const std::string&
     for (const CsvPlot& p : plots) {
       s << "set output '" << p.png << "'\nset title '" << p.title << "'\nset xlabel '" << p.x << "'\nset ylabel ''\nplot ";
       for (size_t k = 0; k < p.ys.size(); ++k)
-        s << (k ? ", " : "") << "'" << p.csv << "' using (column('" << p.x << "')):(column('" << p.ys[k]
+        s << (k ? ", " : "") << "'" << p.csv << "' using (column('" << (p.xs.empty() ? p.x : p.xs[k]) << "')):(column('" << p.ys[k]
           << "')) with lines lw 2 title '" << p.ys[k] << "'";
       s << "\n";
     }

@@ -16,10 +16,13 @@ namespace bdfcar::app {
 std::string plotDrive(const std::string& telemetryCsv, const std::string& outDir,
                       const std::optional<scenario::Iso3888Course>& course, const std::string& title);
 
-// A line plot of CSV columns, by their header names, against one of them.
+// A line plot of CSV columns, by their header names, against one of them
+// (or, where xs is given, each ys[k] against its own xs[k], curves in a
+// plane, and x only names the axis).
 struct CsvPlot {
   std::string csv, png, title, x;
   std::vector<std::string> ys;
+  std::vector<std::string> xs = {};
 };
 
 // Writes the plots through one gnuplot script (`script`, kept beside them).

@@ -79,8 +79,9 @@ struct MagicFormulaForces {
   double Dx = 0, Dy = 0;     // peak factors (N)
 };
 // mu: the road's friction (scales the peak factors by mu / referenceFriction);
-// vx: forward speed for the rolling resistance. The coefficients as the
-// mounted side sees them (mirrored where the sides differ).
+// vx: forward speed for the rolling resistance. p's coefficients are used as
+// they are: a tyre mounted on the other side from TYRESIDE needs
+// mountedCoefficients(p) first (Pac2002Tyre's constructor does that).
 MagicFormulaForces magicFormula(const Pac2002Params& p, double kappa, double alpha, double gamma, double Fz,
                                 double mu, double vx = 0.0);
 
