@@ -9,6 +9,7 @@
 
 #include "cli_errors.h"
 #include "commands.h"
+#include "kc_summary.h"
 #include "scenario_overrides.h"
 #include "config/toml_reader.h"
 #include "multibody/model.h"
@@ -185,6 +186,12 @@ int runInfo(const std::string& path, const std::string& fidelity, const std::vec
     std::printf("\n%s", vehicle::describe(vehicle::vehicleSheet(v)).c_str());
   } catch (const mb::ModelError& e) {
     std::printf("\nno vehicle sheet: %s\n", e.what());
+  }
+  // Its kinematics at design from the K&C rig (bdfcar kc: the curves too).
+  try {
+    std::printf("\n%s", kcSummary(v, path, vehicle::runKcRig(v)).c_str());
+  } catch (const mb::ModelError& e) {
+    std::printf("\nno K&C: %s\n", e.what());
   }
   vehicle::Fidelity f = vehicle::Fidelity::Linkage;
   if (!fidelity.empty()) scenario::parseFidelity(fidelity, f);
