@@ -101,7 +101,7 @@ void certificateTables(std::ostream& md) {
      << "linkage's peak. `auto` holds its error budget (10 % by default) on yaw rate, a_y, roll and height; "
      << "`bdfcar info VEHICLE --fidelity planar` prints the same table. sedan_roll_steer.toml has its front "
      << "inner tie rods 40 mm low (strong bump and roll steer), sedan_anti_dive.toml its front lower arms' "
-     << "axis inclined 10 deg (strong anti-dive): the planar rung carries the first (its toe over travel from "
+     << "axis inclined 10 deg (strong pitch geometry: pro-dive, -47 % on the K&C rig, despite its name): the planar rung carries the first (its toe over travel from "
      << "the sweep), not the second (its pitch on braking shows it).\n\n";
   for (const char* file : {"sedan.toml", "paper.toml", "sedan_drive.toml", "sedan_roll_steer.toml",
                            "sedan_anti_dive.toml"}) {
