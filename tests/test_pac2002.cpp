@@ -13,6 +13,7 @@
 //    line and key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -158,6 +159,21 @@ TEST(Pac2002Chrono9, NormalLoadAndTheContactFrame) {
   EXPECT_NEAR(r.Fy, -o.Fy, 1e-9 * std::abs(o.Fy));
   EXPECT_NEAR(r.Mz, -o.Mz, 1e-9 * std::abs(o.Mz));
   EXPECT_NEAR(r.Fx, o.Fx, 1e-9 * std::abs(o.Fx));
+}
+
+// The peak friction the fidelity policy reads (in closed form) is the
+// largest D / Fz the Magic Formula itself gives over the loads it names,
+// scaled by the road's friction.
+TEST(Pac2002Textbook, PeakFrictionIsTheFormulasPeakFactor) {
+  const Pac2002Params p = sedan(Pac2002Variant::Textbook);
+  for (double mu : {0.3, 0.8}) {
+    double best = 0;
+    for (double share : {0.25, 0.5, 1.0, 2.0}) {
+      const MagicFormulaForces f = magicFormula(p, 0, 0, 0, share * kFnom, mu);
+      best = std::max({best, f.Dx / (share * kFnom), f.Dy / (share * kFnom)});
+    }
+    EXPECT_NEAR(pac2002PeakFriction(p, mu), best, 1e-12) << "mu " << mu;
+  }
 }
 
 // Where the textbook and Chrono's evaluation are one set of equations

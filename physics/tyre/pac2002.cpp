@@ -149,14 +149,18 @@ MagicFormulaForces magicFormula(const Pac2002Params& p, double kappa, double alp
 }
 
 double pac2002PeakFriction(const Pac2002Params& p, double mu) {
-  // The D factors over the load, the largest at a quarter to twice the nominal load.
+  // The D factors over the load (their closed form: no Magic Formula
+  // evaluation; `auto`'s policy asks it of every wheel at every tick), the
+  // largest at a quarter to twice the nominal load, scaled as the peak
+  // factors are by the road's friction over the file's reference.
+  const Pac2002Coefficients& c = p.c;
+  const double Fz0 = p.nominalLoad * c.LFZO;
   double best = 0;
   for (double share : {0.25, 0.5, 1.0, 2.0}) {
-    const double Fz = share * p.nominalLoad;
-    const MagicFormulaForces f = magicFormula(p, 0.0, 0.0, 0.0, Fz, mu);
-    best = std::max({best, f.Dx / Fz, f.Dy / Fz});
+    const double dfz = (share * p.nominalLoad - Fz0) / Fz0;
+    best = std::max({best, std::abs((c.PDX1 + c.PDX2 * dfz) * c.LMUX), std::abs((c.PDY1 + c.PDY2 * dfz) * c.LMUY)});
   }
-  return best;
+  return best * std::clamp(mu, 0.1, 1.0) / p.referenceFriction;
 }
 
 Pac2002Tyre::Pac2002Tyre(const Pac2002Params& p) : p_(p) {
