@@ -156,7 +156,7 @@ TEST(RunStateBytesErrors, RefusedWithWhatIsWrong) {
   scenario::Simulation sedanPlanar(planarSedan), paperPlanar(planarPaper);
   sedanPlanar.prepare();
   paperPlanar.prepare();
-  ASSERT_EQ(sedanPlanar.save().integrator.history[0].q.size(), paperPlanar.save().integrator.history[0].q.size());
+  ASSERT_EQ(sedanPlanar.save().integrator.node(0).q.size(), paperPlanar.save().integrator.node(0).q.size());
   try {
     sedanPlanar.restoreBytes(paperPlanar.saveBytes());
     ADD_FAILURE() << "a planar paper car's state accepted by a planar sedan";

@@ -9,7 +9,8 @@ using namespace bdfcar::scenario;
 
 // Below the limit: T = Kp e + Ki integral(e), the integral by explicit Euler.
 TEST(SpeedControl, IsThePiLawBelowTheLimit) {
-  SpeedController c(SpeedProfile{20.0}, {600, 300}, 1000.0);
+  double state = 0;
+  SpeedController c(SpeedProfile{20.0}, {600, 300}, state, 1000.0);
   const double h = 0.01;
   double integral = 0;
   for (int i = 0; i < 100; ++i) {
@@ -25,13 +26,14 @@ TEST(SpeedControl, IsThePiLawBelowTheLimit) {
 // target the torque is the proportional part alone. Without anti-windup the
 // integral of 10 s of a 10 m/s error (100 m) would give 30000 N m more.
 TEST(SpeedControl, DoesNotWindUpAtTheDrivelineLimit) {
-  SpeedController c(SpeedProfile{20.0}, {600, 300}, 1000.0);
+  double state = 0;
+  SpeedController c(SpeedProfile{20.0}, {600, 300}, state, 1000.0);
   for (int i = 0; i < 1000; ++i) EXPECT_DOUBLE_EQ(c.torque(10.0, 0.01, i * 0.01), 1000.0);
   EXPECT_DOUBLE_EQ(c.integral(), 0.0);
   EXPECT_DOUBLE_EQ(c.torque(21.0, 0.01, 10.0), -600.0);
   // Saturated the other way, the integral that brings it back still counts.
-  SpeedController d(SpeedProfile{20.0}, {600, 300}, 1000.0);
-  d.setIntegral(-10.0);  // T = 600 * 1 - 3000: saturated at -1000, the error (+1) reduces the integral's pull
+  double other = -10.0;  // its state: T = 600 * 1 - 3000: saturated at -1000, the error (+1) reduces the integral's pull
+  SpeedController d(SpeedProfile{20.0}, {600, 300}, other, 1000.0);
   EXPECT_DOUBLE_EQ(d.torque(19.0, 0.01, 0.0), -1000.0);
   EXPECT_DOUBLE_EQ(d.integral(), -10.0 + 0.01);
 }
@@ -45,7 +47,8 @@ TEST(SpeedControl, ActsInItsPhaseAndRampsItsTarget) {
   p.rampTo = 30.0;
   p.rampStart = 1.0;
   p.rampDuration = 4.0;
-  SpeedController c(p, {600, 300});
+  double state = 0;
+  SpeedController c(p, {600, 300}, state);
   EXPECT_EQ(c.torque(5.0, 0.01, 0.5), 0.0);
   EXPECT_DOUBLE_EQ(c.torque(10.0, 0.01, 1.0), 0.0);  // on target at the start
   EXPECT_DOUBLE_EQ(c.target(2.0), 15.0);

@@ -37,7 +37,7 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   opt_.order = std::clamp(opt_.order, 1, kMaxBdfOrder);
   const int nv = n_.nv, nc = n_.nc, n = nv + nc;
   ws_.resize(n_);
-  for (auto& p : hist_) p.resize(n_);
+  bindState(own_);
   for (auto& d : delta_) d.setZero(nv);
   dx_.resize(n_);
   Fa_.setZero(nv, nv);
@@ -70,7 +70,7 @@ EvalStatus BdfIntegrator::initialize(double t0, const Vec& q0, const Vec& v0, Me
   p.q = q0;
   p.v = v0;
   dae_.beginStep(t0, q0, v0);
-  const EvalStatus st = forward_.solve(t0, q0, v0, 0.0, 0.0, p.a, p.lambda, counters_, msg);
+  const EvalStatus st = forward_.solve(t0, q0, v0, 0.0, 0.0, p.a, p.lambda, st_->counters, msg);
   if (st != EvalStatus::Ok) return st;
   initializeConsistent(p);
   return EvalStatus::Ok;
@@ -88,31 +88,17 @@ EvalStatus BdfIntegrator::restart(double t0, const Vec& q0, const Vec& v0, Messa
 }
 
 void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
-  head_ = 0;
-  count_ = 1;
+  st_->head = 0;
+  st_->count = 1;
   node(0) = p;
   haveBlocks_ = false;
   stepsSinceJacobian_ = 0;
   factorizedHPrime_ = 0;
 }
 
-IntegratorState BdfIntegrator::save() const {
-  IntegratorState s;
-  s.history.reserve(count_);
-  for (int i = 0; i < count_; ++i) s.history.push_back(node(i));
-  s.counters = counters_;
-  s.stepsSinceJacobian = stepsSinceJacobian_;
-  return s;
-}
-
-void BdfIntegrator::restore(const IntegratorState& s) {
-  head_ = 0;
-  count_ = std::clamp(static_cast<int>(s.history.size()), 1, kHistory);
-  for (int i = 0; i < count_; ++i) node(i) = s.history[i];
-  counters_ = s.counters;
-  stepsSinceJacobian_ = s.stepsSinceJacobian;
-  haveBlocks_ = false;  // the Jacobian is re-evaluated at the next step, not copied
-  factorizedHPrime_ = 0;
+void BdfIntegrator::bindState(IntegratorState& s) {
+  st_ = &s;
+  bindHistory(s, n_);  // the Jacobian stays (markJacobianStale drops it)
 }
 
 StepReport BdfIntegrator::step(double h) {
@@ -120,7 +106,7 @@ StepReport BdfIntegrator::step(double h) {
   const StartUp mode = opt_.startUp == StartUp::Auto ? (opt_.order >= 3 ? StartUp::Substeps : StartUp::OrderRamp)
                                                      : opt_.startUp;
   StepReport rep;
-  if (count_ == 1 && mode == StartUp::Substeps && opt_.order > 1) {
+  if (st_->count == 1 && mode == StartUp::Substeps && opt_.order > 1) {
     const int m = startupHalvings(h);
     double hs = h / std::ldexp(1.0, m);
     const double tEnd = node(0).t + h;
@@ -134,7 +120,7 @@ StepReport BdfIntegrator::step(double h) {
     rep = splitOnFailure(h, due, 0);
   }
   if (rep.ok()) {
-    ++counters_.steps;
+    ++st_->counters.steps;
     ++stepsSinceJacobian_;
   }
   return rep;
@@ -149,7 +135,7 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) 
   StepReport rep = substep(h, jacobianDue, depth >= kMaxSplits);
   const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
   if (rep.ok() || !retry || depth >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
-  ++counters_.splits;
+  ++st_->counters.splits;
   const double tEnd = node(0).t + h;
   rep = splitOnFailure(0.5 * h, false, depth + 1);
   if (!rep.ok()) return rep;
@@ -158,7 +144,7 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) 
 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
-  long& cnt = counters_.jacobianResiduals;
+  long& cnt = st_->counters.jacobianResiduals;
   EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt);
   if (st == EvalStatus::Ok) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, Fa_, ws_, cnt);
   if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, q_, J_, ws_, cnt);
@@ -166,7 +152,7 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
     msg = ws_.msg;
     return st;
   }
-  ++counters_.jacobians;
+  ++st_->counters.jacobians;
   haveBlocks_ = true;
   stepsSinceJacobian_ = 0;
   factorizedHPrime_ = 0;  // force a factorization with the new blocks
@@ -182,7 +168,7 @@ void BdfIntegrator::factorize(double hp) {
   A_.bottomRightCorner(nc, nc).setZero();
   lu_.compute(A_);
   Ainv_.noalias() = lu_.inverse();
-  ++counters_.factorizations;
+  ++st_->counters.factorizations;
   factorizedHPrime_ = hp;
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) fastBaseFv_.col(k) = dx_.Fv.col(fast[k]);
@@ -198,12 +184,12 @@ void BdfIntegrator::factorize(double hp) {
 EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual& base, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   dae_.retract(node(0).q, d_, q_);
-  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, counters_.jacobianResiduals);
+  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, st_->counters.jacobianResiduals);
   if (st != EvalStatus::Ok) {
     msg = ws_.msg;
     return st;
   }
-  ++counters_.columnRefreshes;
+  ++st_->counters.columnRefreshes;
   if (std::abs(hp - factorizedHPrime_) > 1e-9 * hp) {
     factorize(hp);  // a new step size: the whole matrix anyway
     return EvalStatus::Ok;
@@ -264,7 +250,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       ScopedTimer timer(opt_.timing, timers_.residual);
       dae_.retract(node(0).q, d_, q_);
       st = dae_.residual(t, q_, v_, a_, lam_, r_, true, rep.message);
-      ++counters_.residuals;
+      ++st_->counters.residuals;
     }
     if (st == EvalStatus::Ok && refreshNow) st = refreshFastColumns(t, hp, r_, rep.message);
     refreshNow = false;
@@ -313,8 +299,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       applyLowRankUpdate(e_, nv);
       da_ += e_.head(nv);
     }
-    counters_.solves += 3;
-    ++counters_.newtonIterations;
+    st_->counters.solves += 3;
+    ++st_->counters.newtonIterations;
 
     d_ += dq_;
     v_ += dv_;
@@ -444,11 +430,11 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
   if (opt_.fastColumnRescue && !dae_.fastColumns().empty()) {
     // (a) the refresh from the attempt's first residual
     if (!(rep.correction < firstCorrection_)) startFromPredictor();
-    ++counters_.refreshes;
+    ++st_->counters.refreshes;
     out = attempt(true);
     if (out != NewtonOutcome::NotContracting) return out;
     // (b)
-    ++counters_.rescues;
+    ++st_->counters.rescues;
     out = fullNewton(t, c, JacobianScope::FastColumns, rep);
     if (out != NewtonOutcome::NotContracting) return out;
     if (!lastResort) return out;  // split: a shorter step is the cheaper cure
@@ -460,7 +446,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
     return fullNewton(t, c, JacobianScope::Whole, rep);
   }
   if (!fresh) {  // stale Jacobian: the whole Jacobian at the predictor, the fixed count again
-    ++counters_.refreshes;
+    ++st_->counters.refreshes;
     startFromPredictor();
     dae_.retract(node(0).q, d_, q_);
     if (const EvalStatus st = evaluateJacobian(t, rep.message); st != EvalStatus::Ok) return failed(st);
@@ -468,15 +454,15 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
     out = attempt(false);
     if (out != NewtonOutcome::NotContracting) return out;
   }
-  ++counters_.rescues;
+  ++st_->counters.rescues;
   return fullNewton(t, c, JacobianScope::Whole, rep);
 }
 
 StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort) {
   StepReport rep;
   const double tNew = node(0).t + h;
-  const int k = std::min(opt_.order, count_);
-  const int np = std::min(k + 1, count_);  // nodes for the predictor polynomial
+  const int k = std::min(opt_.order, st_->count);
+  const int np = std::min(k + 1, st_->count);  // nodes for the predictor polynomial
   std::array<double, kMaxBdfOrder + 2> times{};
   times[0] = tNew;
   for (int i = 1; i <= np; ++i) times[i] = node(i - 1).t;
@@ -541,15 +527,13 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort) {
   }
 
   // Accept: the new node becomes node(0).
-  head_ = (head_ + kHistory - 1) % kHistory;
-  count_ = std::min(count_ + 1, kHistory);
-  SolutionPoint& p = node(0);
+  SolutionPoint& p = st_->push();
   p.t = tNew;
   dae_.retract(node(1).q, d_, p.q);
   p.v = v_;
   p.a = a_;
   p.lambda = lam_;
-  ++counters_.substeps;
+  ++st_->counters.substeps;
   if (dae_.acceptStep(tNew, h, p.q, p.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
   return rep;
 }

@@ -61,6 +61,8 @@ struct BdfOptions {
 class BdfIntegrator final : public Integrator {
  public:
   BdfIntegrator(Dae& dae, const BdfOptions& options);
+  BdfIntegrator(const BdfIntegrator&) = delete;  // it points into its own state
+  BdfIntegrator& operator=(const BdfIntegrator&) = delete;
 
   EvalStatus initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
   EvalStatus restart(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
@@ -69,20 +71,20 @@ class BdfIntegrator final : public Integrator {
   StepReport step(double h) override;
 
   const SolutionPoint& current() const override { return node(0); }
-  const Counters& counters() const override { return counters_; }
+  const Counters& counters() const override { return st_->counters; }
   const Timers& timers() const override { return timers_; }
-  IntegratorState save() const override;
-  void restore(const IntegratorState& s) override;
+  void bindState(IntegratorState& s) override;
+  const IntegratorState& state() const override { return *st_; }
   void markJacobianStale() override { haveBlocks_ = false; }
   const BdfOptions& options() const { return opt_; }
   // Condition-free view of the last iteration matrix (for tests).
   const Mat& iterationMatrix() const { return A_; }
 
  private:
-  static constexpr int kHistory = kMaxBdfOrder + 2;
+  static_assert(IntegratorState::kSlots == kMaxBdfOrder + 2, "the ring holds the highest order's history");
 
-  const SolutionPoint& node(int i) const { return hist_[(head_ + i) % kHistory]; }
-  SolutionPoint& node(int i) { return hist_[(head_ + i) % kHistory]; }
+  const SolutionPoint& node(int i) const { return st_->node(i); }
+  SolutionPoint& node(int i) { return st_->node(i); }
   // lastResort: the deepest split, where a stalled step may evaluate the
   // whole Jacobian at every iterate.
   StepReport substep(double h, bool jacobianDue, bool lastResort = false);
@@ -108,13 +110,11 @@ class BdfIntegrator final : public Integrator {
   Dae& dae_;
   BdfOptions opt_;
   DaeSizes n_;
-  Counters counters_;
+  IntegratorState own_;            // the state until bindState
+  IntegratorState* st_ = &own_;   // history and counters
   Timers timers_;
   ForwardDynamics forward_;
   BlockWorkspace ws_;
-
-  std::array<SolutionPoint, kHistory> hist_;
-  int head_ = 0, count_ = 0;
 
   // Jacobian state.
   bool haveBlocks_ = false;

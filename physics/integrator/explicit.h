@@ -30,14 +30,16 @@ class ExplicitIntegrator final : public Integrator {
   ExplicitIntegrator(Dae& dae, const ExplicitOptions& options);
   EvalStatus initialize(double t0, const Vec& q0, const Vec& v0, Message& msg) override;
   StepReport step(double h) override;
-  const SolutionPoint& current() const override { return cur_; }
-  const Counters& counters() const override { return counters_; }
+  ExplicitIntegrator(const ExplicitIntegrator&) = delete;  // it points into its own state
+  ExplicitIntegrator& operator=(const ExplicitIntegrator&) = delete;
+  const SolutionPoint& current() const override { return st_->node(0); }
+  const Counters& counters() const override { return st_->counters; }
   const Timers& timers() const override { return timers_; }
-  IntegratorState save() const override { return {{cur_}, counters_, 0}; }
-  void restore(const IntegratorState& s) override {
-    cur_ = s.history.front();
-    counters_ = s.counters;
+  void bindState(IntegratorState& s) override {
+    st_ = &s;
+    bindHistory(s, n_);
   }
+  const IntegratorState& state() const override { return *st_; }
 
  private:
   // Acceleration at local coordinates delta around cur_.q with velocity v.
@@ -48,10 +50,12 @@ class ExplicitIntegrator final : public Integrator {
   Dae& dae_;
   ExplicitOptions opt_;
   DaeSizes n_;
-  Counters counters_;
+  SolutionPoint& cur() { return st_->node(0); }  // the one point of its history
+  const SolutionPoint& cur() const { return st_->node(0); }
+  IntegratorState own_;           // the state until bindState
+  IntegratorState* st_ = &own_;
   Timers timers_;
   ForwardDynamics forward_;
-  SolutionPoint cur_;
   Vec q_, lam_, d_, dv_, rate_;
   Mat J_;
   Residual r_;

@@ -3,6 +3,8 @@
 // back-substitution).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "integrator/dae.h"
@@ -60,15 +62,34 @@ struct Counters {
 Counters& operator+=(Counters& a, const Counters& b);
 
 // Everything an integrator carries from one step to the next, as one plain
-// value: the solution history (newest first) and the work counters. What it
-// can recompute (the Jacobian and its factorization) is not part of it: a
-// run continued from a state evaluates a fresh Jacobian at its first step.
+// value: the solution history and the work counters. The integrator works on
+// it in place (bindState): the history is a ring of kSlots points, node(0)
+// the newest, so that a step moves no point. What it can recompute (the
+// Jacobian, its factorization and age) is not part of it: a run continued
+// from a state evaluates a fresh Jacobian at its first step.
 struct IntegratorState {
-  std::vector<SolutionPoint> history;  // node(0), node(1), ... (BDF: up to order + 1; explicit: one)
+  static constexpr int kSlots = 7;  // BDF order 5 + 2 (bdf.h checks)
+  std::array<SolutionPoint, kSlots> ring;
+  int head = 0;   // ring slot of node(0)
+  int count = 0;  // points in the history (BDF: up to order + 1; explicit: one)
   Counters counters;
-  long stepsSinceJacobian = 0;
-  bool operator==(const IntegratorState& o) const;
+  const SolutionPoint& node(int i) const { return ring[(head + i) % kSlots]; }
+  SolutionPoint& node(int i) { return ring[(head + i) % kSlots]; }
+  // A new newest point (the oldest slot reused): node(0) is then it.
+  SolutionPoint& push() {
+    head = (head + kSlots - 1) % kSlots;
+    count = std::min(count + 1, kSlots);
+    return node(0);
+  }
+  // The same history (newest first, bit for bit), wherever the ring starts;
+  // and the same counters too.
+  bool sameHistory(const IntegratorState& o) const;
+  bool operator==(const IntegratorState& o) const { return sameHistory(o) && counters == o.counters; }
 };
+
+// Sizes s's points for a system of sizes n (an integrator bound to it): a
+// history of other sizes (another model's) is dropped, one of these sizes kept.
+void bindHistory(IntegratorState& s, const DaeSizes& n);
 
 // Wall time, seconds, accumulated over the run (when timing is on).
 struct Timers {
@@ -100,10 +121,11 @@ class Integrator {
   virtual const SolutionPoint& current() const = 0;
   virtual const Counters& counters() const = 0;
   virtual const Timers& timers() const = 0;
-  // The state as a value, and back. restore() keeps the options and drops
-  // every cached Jacobian (it is re-evaluated at the next step).
-  virtual IntegratorState save() const = 0;
-  virtual void restore(const IntegratorState& s) = 0;
+  // The state the integrator works on: its own until bound to another (a
+  // run state's, which the simulation owns); binding sizes the ring's points
+  // for this system and keeps the history of the right sizes.
+  virtual void bindState(IntegratorState& s) = 0;
+  virtual const IntegratorState& state() const = 0;
   // The next step evaluates a fresh Jacobian (a snapshot boundary: the run
   // that goes on and a run restored to the snapshot then step alike).
   virtual void markJacobianStale() {}

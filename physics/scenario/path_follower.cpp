@@ -10,10 +10,10 @@ double PathFollower::steer(double x, double y, double yaw, double v, double yawR
   // Learn the understeer from how much curvature the last command produced,
   // only while turning clearly (small curvatures say nothing).
   const double obtained = std::abs(v) > 1.0 ? yawRate / v : 0.0;
-  if (std::abs(lastCurvature_) > 2e-3 && std::abs(obtained) > 1e-3 && lastCurvature_ * obtained > 0) {
-    const double ratio = std::clamp(lastCurvature_ / obtained, 0.5, 4.0);
+  if (std::abs(s_.lastCurvature) > 2e-3 && std::abs(obtained) > 1e-3 && s_.lastCurvature * obtained > 0) {
+    const double ratio = std::clamp(s_.lastCurvature / obtained, 0.5, 4.0);
     const double a = std::clamp(dt / p_.learningTime, 0.0, 1.0);
-    gain_ += a * (ratio - gain_);
+    s_.gain += a * (ratio - s_.gain);
   }
   const double L = std::max(p_.minLookAhead, p_.lookAheadTime * std::abs(v));
   // The target on the path L ahead (driver_paths.h).
@@ -23,8 +23,8 @@ double PathFollower::steer(double x, double y, double yaw, double v, double yawR
   const double dx = tx - x, dy = ty - y;
   const double eta = pm::atan2(dy, dx) - yaw;
   const double curvature = 2.0 * pm::sin(eta) / pm::hypot(dx, dy);
-  lastCurvature_ = curvature;
-  const double roadWheel = pm::atan(p_.wheelbase * curvature * gain_);
+  s_.lastCurvature = curvature;
+  const double roadWheel = pm::atan(p_.wheelbase * curvature * s_.gain);
   return std::clamp(roadWheel * p_.steerPerRoadWheel, -1.0, 1.0);
 }
 

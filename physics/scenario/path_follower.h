@@ -22,27 +22,24 @@ struct PathFollowerParams {
 
 class PathFollower {
  public:
-  PathFollower(const PathFollowerParams& p, PathTarget target) : p_(p), target_(std::move(target)) {}
+  // What the follower has learnt and last asked for: its run state.
+  struct State {
+    double gain = 1.0;           // curvature asked / curvature obtained
+    double lastCurvature = 0.0;  // curvature asked for at the last call
+    bool operator==(const State&) const = default;
+  };
+  // state: where it lives (a RunState's).
+  PathFollower(const PathFollowerParams& p, PathTarget target, State& state)
+      : p_(p), target_(std::move(target)), s_(state) {}
   // Normalised steering [-1, 1] for a vehicle at (x, y) with heading yaw,
   // speed v and yaw rate r; dt is the time since the last call.
   double steer(double x, double y, double yaw, double v, double yawRate, double dt);
-  double understeerGain() const { return gain_; }
-  // What the follower has learnt and last asked for: its run state.
-  struct State {
-    double gain = 1.0, lastCurvature = 0.0;
-    bool operator==(const State&) const = default;
-  };
-  State state() const { return {gain_, lastCurvature_}; }
-  void setState(const State& s) {
-    gain_ = s.gain;
-    lastCurvature_ = s.lastCurvature;
-  }
+  double understeerGain() const { return s_.gain; }
 
  private:
   PathFollowerParams p_;
   PathTarget target_;
-  double gain_ = 1.0;           // curvature asked / curvature obtained
-  double lastCurvature_ = 0.0;  // curvature asked for at the last call
+  State& s_;
 };
 
 }  // namespace bdfcar::scenario

@@ -12,9 +12,10 @@ namespace bdfcar::scenario {
 namespace {
 
 constexpr char kMagic[8] = {'B', 'D', 'F', 'C', 'A', 'R', 'R', 'S'};
-// A history longer than the BDF's (order 5 + 2) or a vector longer than any
-// model's is not a run state: refused before anything is allocated for it.
-constexpr std::uint64_t kMaxHistory = 16;
+// A history longer than the BDF's (order 5 + 2: the ring's slots) or a
+// vector longer than any model's is not a run state: refused before anything
+// is allocated for it.
+constexpr std::uint64_t kMaxHistory = integ::IntegratorState::kSlots;
 constexpr std::uint64_t kMaxVector = 1u << 16;
 
 // Writes every field it is shown, in order.
@@ -144,11 +145,14 @@ void wheel(IO& io, W& w) {
 template <class IO, class S>
 void fields(IO& io, S& s) {
   io.field("model fingerprint", s.model);
-  const std::uint64_t points = io.count("integrator history", s.integrator.history.size(), kMaxHistory);
-  if constexpr (!std::is_const_v<S>) s.integrator.history.resize(points);
-  for (auto& p : s.integrator.history) solutionPoint(io, p);
+  // The history newest first, wherever the ring starts (read: from slot 0).
+  const std::uint64_t points = io.count("integrator history", s.integrator.count, kMaxHistory);
+  if constexpr (!std::is_const_v<S>) {
+    s.integrator.head = 0;
+    s.integrator.count = static_cast<int>(points);
+  }
+  for (int i = 0; i < s.integrator.count; ++i) solutionPoint(io, s.integrator.node(i));
   counters(io, s.integrator.counters);
-  io.field("integrator steps since the Jacobian", s.integrator.stepsSinceJacobian);
   for (auto& w : s.forces.wheels) wheel(io, w);
   auto& d = s.forces.driveline;
   for (auto* x : {&d.command.throttle, &d.command.clutchCapacity, &d.command.ratio, &d.clutchDeflection, &d.engineSpeed,
@@ -230,9 +234,11 @@ std::optional<std::string> Simulation::misfit(const RunState& s) const {
   if (s.rung < 0 || s.rung >= rungCount())
     return "rung " + std::to_string(s.rung) + " of a simulation with " + std::to_string(rungCount());
   const integ::DaeSizes n = rungs_[static_cast<size_t>(s.rung)].stepping->sizes();
-  if (s.integrator.history.empty()) return std::string("no integrator history");
-  for (const integ::SolutionPoint& p : s.integrator.history)
-    if (p.q.size() != n.nq || p.v.size() != n.nv || p.a.size() != n.nv || p.lambda.size() != n.nc)
+  if (s.integrator.count < 1 || s.integrator.count > integ::IntegratorState::kSlots)
+    return std::string("no integrator history");
+  for (int i = 0; i < s.integrator.count; ++i)
+    if (const integ::SolutionPoint& p = s.integrator.node(i);
+        p.q.size() != n.nq || p.v.size() != n.nv || p.a.size() != n.nv || p.lambda.size() != n.nc)
       return "a state of " + std::to_string(p.q.size()) + " coordinates and " + std::to_string(p.lambda.size()) +
              " constraints for a model of " + std::to_string(n.nq) + " and " + std::to_string(n.nc) +
              " (another vehicle or rung)";

@@ -24,8 +24,9 @@ namespace bdfcar::scenario {
 
 // 2: the model fingerprint (RunState::model) first. 3: the latest
 // evaluation's tyre outputs left out (they are not state), the accepted
-// step's tyre force in.
-inline constexpr std::uint32_t kRunStateFormat = 4;
+// step's tyre force in. 5: the integrator's steps since its Jacobian left
+// out (the Jacobian's age, not state: a restored run evaluates a fresh one).
+inline constexpr std::uint32_t kRunStateFormat = 5;
 
 class RunStateBytesError : public std::runtime_error {
  public:

@@ -77,7 +77,8 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       steering_(steeringSignal(world_->spec)),
       throttle_(makeSignal(world_->spec.throttle)),
       brake_(makeSignal(world_->spec.brake)),
-      rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_),
+      rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_,
+            state_.rack),
       steeringLimits_(steeringLimits(world_->vehicle.spec.steering)) {
   const ScenarioSpec& spec = world_->spec;
   const vehicle::Vehicle& veh = world_->vehicle;
@@ -95,10 +96,12 @@ Simulation::Simulation(std::shared_ptr<const World> world)
   vehicle::ByteBuffer models;
   for (const Rung& r : rungs_) models.put(vehicle::derivationFingerprint(*r.vehicle));
   modelFingerprint_ = vehicle::hashBytes(models.bytes);
+  state_.model = modelFingerprint_;
   activate(0);
-  if (veh.spec.powertrain) transmission_.emplace(*veh.spec.powertrain);
+  if (veh.spec.powertrain) transmission_.emplace(*veh.spec.powertrain, state_.transmission);
   if (spec.speedControl.enabled)
     speed_.emplace(spec.speedControl.profile, SpeedControllerGains{spec.speedControl.kp, spec.speedControl.ki},
+                   state_.speedIntegral,
                    // The driveline's limit per driven wheel (none on a vehicle without one).
                    driveLimit(veh));
   if (spec.pathFollower.enabled) {
@@ -130,7 +133,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
                  side * f.radius * Eigen::Vector2d(-pm::sin(spec.startHeading), pm::cos(spec.startHeading));
       target = [c](double x, double y, double, double L) { return c.target(x, y, L); };
     }
-    follower_.emplace(p, target);
+    follower_.emplace(p, target, state_.follower);
   }
 }
 
@@ -192,7 +195,7 @@ Simulation::StartPose Simulation::startPose() const {
 vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   // Settling on the full model; `auto` chooses from the first tick on.
   activate(0);
-  policyState_ = {};
+  state_.fidelity = {};
   const mb::Model& m = vehicle().model;
   const mb::Body& ch = m.bodies[vehicle().layout.chassis];
   const double t0 = -spec().settleTime;
@@ -260,12 +263,12 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
   forces_->reset(t0);
   integ::Message im;
   integ::Vec qs, vs;  // in the stepping model's coordinates
-  fromMultibody(active_, q, v, qs, vs);
+  fromMultibody(state_.rung, q, v, qs, vs);
   if (integrator_->initialize(t0, qs, vs, im) != integ::EvalStatus::Ok)
     throw std::runtime_error(std::string("initial state: ") + im.c_str());
   prepared_ = true;
-  airborne_ = 0;
-  scriptedDriver_ = true;
+  state_.airborne = 0;
+  state_.scriptedDriver = true;
   rack_.segment = RackSegment{};
   // Settling: straight running with the scripted driver (steering is zero before tau = 0).
   const double h = spec().integrator.step;
@@ -286,23 +289,23 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
 integ::StepReport Simulation::step() {
   if (!prepared_) throw std::logic_error("Simulation::prepare() must run before step()");
   const double t = time(), h = spec().integrator.step;
-  if (scriptedDriver_) {
-    input_.throttle = throttle_->at(t).value;
-    input_.brake = brake_->at(t).value;
-    if (rack_.segment.scripted) input_.steer = steering_->at(t + h).value;
+  if (state_.scriptedDriver) {
+    state_.input.throttle = throttle_->at(t).value;
+    state_.input.brake = brake_->at(t).value;
+    if (rack_.segment.scripted) state_.input.steer = steering_->at(t + h).value;
   }
-  applyDrive(input_, chassisState().vx, h);
-  input_.shift = 0;  // a gear request acts once, at the tick's first step
+  applyDrive(state_.input, chassisState().vx, h);
+  state_.input.shift = 0;  // a gear request acts once, at the tick's first step
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;
   bool grounded = false;
   for (const vehicle::WheelContact& w : forces_->wheels()) grounded = grounded || w.plane.valid;
-  airborne_ = grounded ? 0.0 : airborne_ + h;
+  state_.airborne = grounded ? 0.0 : state_.airborne + h;
   if (vehicle().planar) {
     if (const std::optional<std::string> off = offLevelGround()) {
       if (policy_) {
         // `auto`'s scan missed it: the full model from here on.
-        FidelityPolicy::forceFull(policyState_);
+        FidelityPolicy::forceFull(state_.fidelity);
         switchRung(0);
         return r;
       }
@@ -321,7 +324,7 @@ integ::StepReport Simulation::step() {
     r.message.set("%s", under->c_str());
     return r;
   }
-  if (airborne_ > kMaxAirborne) {
+  if (state_.airborne > kMaxAirborne) {
     const Eigen::Vector3d com = chassisState().com;
     r.status = integ::StepStatus::StateCheckFailed;
     r.message.set("the car left the terrain: no ground under any wheel for %.1f s (centre of mass at x = %.1f m, "
@@ -411,38 +414,16 @@ std::optional<std::string> Simulation::offLevelGround() const {
 }
 
 RunState Simulation::save() {
-  RunState s;
-  s.model = modelFingerprint_;
-  s.integrator = integrator_->save();
-  s.forces = forces_->state();
-  s.rack = rack_.segment;
-  s.speedIntegral = speed_ ? speed_->integral() : 0.0;
-  if (follower_) s.follower = follower_->state();
-  s.input = input_;
-  s.scriptedDriver = scriptedDriver_;
-  s.airborne = airborne_;
-  s.rung = active_;
-  s.fidelity = policyState_;
-  if (transmission_) s.transmission = transmission_->state();
   // Every model's Jacobian (a model switched back to keeps its own): a run
   // restored to this state finds none either.
   for (Rung& r : rungs_) r.integrator->markJacobianStale();
-  return s;
+  return state_;
 }
 
 void Simulation::restore(const RunState& s) {
   for (Rung& r : rungs_) r.integrator->markJacobianStale();
-  activate(s.rung);
-  policyState_ = s.fidelity;
-  integrator_->restore(s.integrator);
-  forces_->setState(s.forces);
-  rack_.segment = s.rack;
-  if (speed_) speed_->setIntegral(s.speedIntegral);
-  if (follower_) follower_->setState(s.follower);
-  input_ = s.input;
-  if (transmission_) transmission_->setState(s.transmission);
-  scriptedDriver_ = s.scriptedDriver;
-  airborne_ = s.airborne;
+  state_ = s;
+  activate(state_.rung);
   prepared_ = true;
 }
 

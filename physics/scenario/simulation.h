@@ -110,8 +110,10 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle:
                                         vehicle::Vehicle model);
 
 // Everything that changes while a scenario runs, as one plain value:
-// copyable, comparable, restorable. The Jacobian is not part of it (a run
-// continued from a state evaluates a fresh one).
+// copyable, comparable, restorable. A Simulation owns one and its parts work
+// on their members in place (the integrator on `integrator`, the force laws
+// on `forces`, the controllers on theirs). The Jacobian is not part of it (a
+// run continued from a state evaluates a fresh one).
 struct RunState {
   // The models it is a state of: Simulation's fingerprint of its rungs'
   // vehicles (bodies, joints, springs, layout), so that a state of another
@@ -134,8 +136,10 @@ struct RunState {
 // The rack target as a signal: steer s(t) in [-1, 1] -> rack travel.
 class RackSignal final : public Signal {
  public:
-  RackSignal(double rackPerSteer, const Signal& scripted) : gain_(rackPerSteer), scripted_(scripted) {}
-  RackSegment segment;
+  // segment: the run state's, where the signal keeps its segment.
+  RackSignal(double rackPerSteer, const Signal& scripted, RackSegment& segment)
+      : segment(segment), gain_(rackPerSteer), scripted_(scripted) {}
+  RackSegment& segment;
   SignalValue at(double t) const override;
   double steerAt(double t) const;
   double rateAt(double t) const;
@@ -187,15 +191,15 @@ class Simulation {
   // The rung driving now (0: world().vehicle; 1: world().planar under
   // `auto`), how many there are, and a switch to another (the state mapped,
   // the integrator restarted; what `auto` does at a tick).
-  int rung() const { return active_; }
+  int rung() const { return state_.rung; }
   int rungCount() const { return static_cast<int>(rungs_.size()); }
   // False when the switch down was refused: the mapping would have moved
   // the chassis by more than FidelityPolicy::kMaxJump or kMaxTurn.
   bool switchRung(int rung);
   // The largest chassis jump (m) of the switches made since the last call.
   double takeSwitchJump();
-  const FidelityPolicy::State& fidelityState() const { return policyState_; }
-  long fidelitySwitches() const { return policyState_.switches; }
+  const FidelityPolicy::State& fidelityState() const { return state_.fidelity; }
+  long fidelitySwitches() const { return state_.fidelity.switches; }
   // The work of every rung's integrator.
   integ::Counters counters() const;
   integ::Timers timers() const;
@@ -210,7 +214,7 @@ class Simulation {
   vehicle::VehicleView view();                      // after sample()
   const World& world() const { return *world_; }
   const ScenarioSpec& spec() const { return world_->spec; }
-  const vehicle::Vehicle& vehicle() const { return *rungs_[active_].vehicle; }
+  const vehicle::Vehicle& vehicle() const { return *rungs_[state_.rung].vehicle; }
   // The integrator of the rung driving (a closed form's holds its own coordinates).
   const integ::Integrator& integrator() const { return *integrator_; }
   // The current point in the active rung's multibody coordinates (what the
@@ -220,7 +224,7 @@ class Simulation {
   const std::optional<Iso3888Course>& course() const { return world_->course; }
   // Steering input in [-1, 1] applied at time t (scripted, path follower or person).
   double steerAt(double t) const { return rack_.steerAt(t); }
-  DriverInput lastInput() const { return input_; }
+  DriverInput lastInput() const { return state_.input; }
   double driveTorque(int wheel) const { return forces_->wheels()[wheel].driveTorque; }
   // A powertrain's controller (none without a powertrain) and its driveline's latest evaluation.
   const Transmission* transmission() const { return transmission_ ? &*transmission_ : nullptr; }
@@ -276,9 +280,11 @@ class Simulation {
 
   std::shared_ptr<const World> world_;
   std::unique_ptr<Signal> steering_, throttle_, brake_;
+  // The run state, which the parts below work on in place (each bound to its
+  // member): save() is a copy, restore() an assignment. Declared before them.
+  RunState state_;
   std::vector<Rung> rungs_;
   std::uint64_t modelFingerprint_ = 0;  // RunState::model of this simulation's states
-  int active_ = 0;
   // The active rung's parts.
   vehicle::VehicleForces* forces_ = nullptr;
   mb::MultibodyDae* dae_ = nullptr;          // the multibody model (a closed form's: for outputs only)
@@ -286,20 +292,16 @@ class Simulation {
   integ::Dae* stepping_ = nullptr;
   integ::Integrator* integrator_ = nullptr;
   std::optional<FidelityPolicy> policy_;
-  FidelityPolicy::State policyState_;
   double switchJump_ = 0;  // m, for the telemetry: see takeSwitchJump
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
   std::optional<Transmission> transmission_;
   RackSignal rack_;
   SteeringLimits steeringLimits_;
-  DriverInput input_;
-  bool scriptedDriver_ = true;
   bool prepared_ = false;
-  // Time with no ground under any wheel: off the edge of a bounded terrain the
-  // car would fall for ever, so the run stops with a message instead. A jump
-  // off a ramp lasts well under kMaxAirborne.
-  double airborne_ = 0;
+  // Time with no ground under any wheel (RunState::airborne): off the edge of
+  // a bounded terrain the car would fall for ever, so the run stops with a
+  // message instead. A jump off a ramp lasts well under kMaxAirborne.
   static constexpr double kMaxAirborne = 3.0;  // s
   // Where the ground under a planar model's wheel leaves its road plane
   // (FidelityPolicy::level's tolerances): a rough road's or a curb's height,

@@ -75,7 +75,7 @@ PowertrainChannels Simulation::powertrainChannels() const {
                        ? 0.0
                        : vehicle::clutchTorque(p.clutch, d.command.clutchCapacity, d.clutchDeflection, slip, 0.0);
   c.throttle = d.command.throttle;
-  c.handbrake = input_.handbrake;
+  c.handbrake = state_.input.handbrake;
   return c;
 }
 
@@ -132,24 +132,24 @@ void Simulation::steerToward(double command) {
 }
 
 void Simulation::beginTick(const std::optional<DriverInput>& input) {
-  scriptedDriver_ = !input;
+  state_.scriptedDriver = !input;
   if (input) {
-    input_.steer = std::clamp(input->steer, -1.0, 1.0);
-    input_.throttle = std::clamp(input->throttle, 0.0, 1.0);
-    input_.brake = std::clamp(input->brake, 0.0, 1.0);
-    input_.handbrake = std::clamp(input->handbrake, 0.0, 1.0);
-    input_.clutch = std::clamp(input->clutch, 0.0, 1.0);
-    input_.clutchPedal = input->clutchPedal;
-    input_.shift = input->shift > 0 ? 1 : input->shift < 0 ? -1 : 0;
-    steerToward(input_.steer);
+    state_.input.steer = std::clamp(input->steer, -1.0, 1.0);
+    state_.input.throttle = std::clamp(input->throttle, 0.0, 1.0);
+    state_.input.brake = std::clamp(input->brake, 0.0, 1.0);
+    state_.input.handbrake = std::clamp(input->handbrake, 0.0, 1.0);
+    state_.input.clutch = std::clamp(input->clutch, 0.0, 1.0);
+    state_.input.clutchPedal = input->clutchPedal;
+    state_.input.shift = input->shift > 0 ? 1 : input->shift < 0 ? -1 : 0;
+    steerToward(state_.input.steer);
   } else if (follower_ && time() >= 0) {
     const ChassisState s = chassisState();
-    input_.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, spec().tick);
-    steerToward(input_.steer);
+    state_.input.steer = follower_->steer(s.com.x(), s.com.y(), s.yaw, s.vx, s.yawRate, spec().tick);
+    steerToward(state_.input.steer);
   } else if (spec().steering.asDriverCommand && time() >= 0) {
     // Sampled in the middle of the tick, away from a square signal's edges.
-    input_.steer = std::clamp(steering_->at(time() + 0.5 * spec().tick).value, -1.0, 1.0);
-    steerToward(input_.steer);
+    state_.input.steer = std::clamp(steering_->at(time() + 0.5 * spec().tick).value, -1.0, 1.0);
+    steerToward(state_.input.steer);
   }
   if (policy_) chooseRung();
 }

@@ -45,6 +45,9 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
     r.forces = std::make_unique<vehicle::VehicleForces>(veh, *world_->terrain, contact);
     r.dae->addForceProvider(r.forces.get());
   }
+  // The force laws' states are per wheel in every model: one for all rungs,
+  // carried across a switch as it is.
+  (r.car ? r.car->forces() : *r.forces).bindState(state_.forces);
   // A wheel's spin column of the Jacobian is dominated by its tyre's slip
   // stiffness, which collapses when the tyre saturates (a rough road flips
   // a tyre between the regimes from one step to the next): the integrator
@@ -70,13 +73,15 @@ std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae) c
 }
 
 void Simulation::activate(int rung) {
-  active_ = rung;
+  state_.rung = rung;
   Rung& r = rungs_[rung];
   car_ = r.car.get();
   forces_ = car_ ? &car_->forces() : r.forces.get();
   dae_ = r.dae.get();
   stepping_ = r.stepping;
   integrator_ = r.integrator.get();
+  // The one history: a switch restarts it in this model's coordinates.
+  integrator_->bindState(state_.integrator);
 }
 
 void Simulation::toMultibody(int rung, double t, const integ::Vec& q, const integ::Vec& v, integ::Vec& qm,
@@ -112,40 +117,38 @@ Simulation::ChassisPose Simulation::chassisPose(int rung, const integ::Vec& q) {
 }
 
 bool Simulation::switchRung(int rung) {
-  if (rung == active_) return true;
+  if (rung == state_.rung) return true;
   if (!world_->planar) throw std::logic_error("Simulation::switchRung: the run has one model");
   const integ::SolutionPoint from = integrator_->current();
   Eigen::VectorXd fromQ, fromV, q, v;
-  toMultibody(active_, from.t, from.q, from.v, fromQ, fromV);
+  toMultibody(state_.rung, from.t, from.q, from.v, fromQ, fromV);
   if (rung == 1) vehicle::kinematicToPlanar(world_->vehicle, *world_->planar, fromQ, fromV, q, v);
   else vehicle::planarToKinematic(*world_->planar, world_->vehicle, fromQ, fromV, q, v);
   // A switch never moves the chassis: what the mapping drops (heave, the
   // travels) must be what the lower rung would have anyway. Up, the mapping
   // copies the sprung body's pose (a jump there would be a bug, and staying
   // on a rung outside its validity is no option: it is measured, not refused).
-  const ChassisPose a = chassisPose(active_, fromQ), b = chassisPose(rung, q);
+  const ChassisPose a = chassisPose(state_.rung, fromQ), b = chassisPose(rung, q);
   const double jump = (b.p - a.p).norm();
   const Eigen::Matrix3d M = a.R.transpose() * b.R;
   const Eigen::Vector3d axis(M(2, 1) - M(1, 2), M(0, 2) - M(2, 0), M(1, 0) - M(0, 1));
   const double turn = pm::atan2(0.5 * axis.norm(), 0.5 * (M.trace() - 1.0));
-  if (rung > active_ && (jump > FidelityPolicy::kMaxJump || turn > FidelityPolicy::kMaxTurn)) {
-    FidelityPolicy::refuse(policyState_);
+  if (rung > state_.rung && (jump > FidelityPolicy::kMaxJump || turn > FidelityPolicy::kMaxTurn)) {
+    FidelityPolicy::refuse(state_.fidelity);
     return false;
   }
-  // The force laws' states (contact planes, transient slips, brakes, held
-  // inputs) are per wheel in both models.
-  const vehicle::VehicleForces::State forces = forces_->state();
+  // The force laws' state (contact planes, transient slips, brakes, held
+  // inputs: per wheel in both models) goes on as it is.
   activate(rung);
-  forces_->setState(forces);
   integ::Message msg;
   Eigen::VectorXd toQ, toV;
   fromMultibody(rung, q, v, toQ, toV);
   if (integrator_->restart(from.t, toQ, toV, msg) != integ::EvalStatus::Ok)
     throw std::runtime_error("switching to the " + std::string(vehicle::fidelityName(vehicle().fidelity)) +
                              " model at t = " + std::to_string(from.t) + " s: " + msg.c_str());
-  ++policyState_.switches;
-  policyState_.maxJump = std::max(policyState_.maxJump, jump);
-  policyState_.maxTurn = std::max(policyState_.maxTurn, turn);
+  ++state_.fidelity.switches;
+  state_.fidelity.maxJump = std::max(state_.fidelity.maxJump, jump);
+  state_.fidelity.maxTurn = std::max(state_.fidelity.maxTurn, turn);
   switchJump_ = std::max(switchJump_, jump);
   return true;
 }
@@ -159,16 +162,13 @@ double Simulation::takeSwitchJump() {
 void Simulation::chooseRung() {
   const ChassisState c = chassisState();
   const FidelityPolicy::Decision d =
-      policy_->decide(policyState_, c.com.head<2>(), c.yaw, c.vx, c.yawRate, forces_->wheels(), spec().tick);
+      policy_->decide(state_.fidelity, c.com.head<2>(), c.yaw, c.vx, c.yawRate, forces_->wheels(), spec().tick);
   if (d == FidelityPolicy::Decision::Full) switchRung(0);
   if (d == FidelityPolicy::Decision::Planar) switchRung(1);
 }
 
-integ::Counters Simulation::counters() const {
-  integ::Counters c;
-  for (const Rung& r : rungs_) c += r.integrator->counters();
-  return c;
-}
+// One history for every rung, so one count of the work (a restart keeps it).
+integ::Counters Simulation::counters() const { return state_.integrator.counters; }
 
 integ::Timers Simulation::timers() const {
   integ::Timers t;

@@ -44,10 +44,12 @@ struct SpeedProfile {
 
 class SpeedController {
  public:
-  // limit: the largest |torque| per driven wheel (N m; infinity: none).
-  SpeedController(const SpeedProfile& p, const SpeedControllerGains& g,
+  // integral: where its run state lives (the integral of the speed error, m;
+  // a RunState's). limit: the largest |torque| per driven wheel (N m;
+  // infinity: none).
+  SpeedController(const SpeedProfile& p, const SpeedControllerGains& g, double& integral,
                   double limit = std::numeric_limits<double>::infinity())
-      : profile_(p), g_(g), limit_(limit) {}
+      : profile_(p), g_(g), limit_(limit), integral_(integral) {}
   // Torque to hold during the next step [t, t + h], given the current speed.
   double torque(double vx, double h, double t) {
     if (!profile_.active(t)) {
@@ -67,15 +69,13 @@ class SpeedController {
   double target(double t) const { return profile_.at(t); }
   bool active(double t) const { return profile_.active(t); }
   void reset() { integral_ = 0; }
-  // The integral of the speed error (m): the controller's run state.
   double integral() const { return integral_; }
-  void setIntegral(double x) { integral_ = x; }
 
  private:
   SpeedProfile profile_;
   SpeedControllerGains g_;
   double limit_;
-  double integral_ = 0;
+  double& integral_;
 };
 
 }  // namespace bdfcar::scenario

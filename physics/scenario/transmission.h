@@ -44,7 +44,8 @@ struct DrivelineSpeeds {
 
 class Transmission {
  public:
-  explicit Transmission(const vehicle::PowertrainSpec& spec) : spec_(spec) {}
+  // state: where its run state lives (a RunState's).
+  Transmission(const vehicle::PowertrainSpec& spec, TransmissionState& state) : spec_(spec), state_(state) {}
 
   // The gear a car starting at forward speed vx with its driven wheels at
   // `output` rad/s starts in: first at rest, else the lowest gear that does
@@ -55,7 +56,6 @@ class Transmission {
   vehicle::DrivelineCommand update(const DriverInput& in, const DrivelineSpeeds& s, double h);
 
   const TransmissionState& state() const { return state_; }
-  void setState(const TransmissionState& s) { state_ = s; }
   bool shifting() const { return state_.shiftClock >= 0; }
 
   static constexpr double kEngagementRate = 5.0;   // 1/s
@@ -67,8 +67,8 @@ class Transmission {
   double launchEngagement(double engineSpeed, double lockedSpeed) const;
 
   const vehicle::PowertrainSpec& spec_;
-  TransmissionState state_;
-  bool pedal_ = false;        // the current request came with a clutch pedal
+  TransmissionState& state_;
+  bool pedal_ = false;        // the current request came with a clutch pedal (this update's input)
 };
 
 }  // namespace bdfcar::scenario

@@ -30,16 +30,16 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
 }
 
 void VehicleForces::reset(double t) {
-  for (WheelContact& c : wheels_) {
+  for (WheelContact& c : state_->wheels) {
     c.slip = tyre::SlipState{};
     c.brakeDeflection = 0;
     c.acceptedForce.setZero();
     c.acceptedInContact = false;
     c.acceptedFx = c.acceptedFy = c.acceptedFz = 0;
   }
-  driveline_.clutchDeflection = 0;
-  lastAccepted_ = t;
-  planesReady_ = false;
+  state_->driveline.clutchDeflection = 0;
+  state_->lastAccepted = t;
+  state_->planesReady = false;
   if (lattice_) lattice_->clear();
 }
 
@@ -104,7 +104,7 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
 }
 
 void VehicleForces::prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
-  WheelContact& c = wheels_[w];
+  WheelContact& c = state_->wheels[w];
   if (!envelopes_[w].on) {
     c.plane = queryGround(centre, spinAxis, tyres_[w].unloadedRadius());
     return;
@@ -115,7 +115,7 @@ void VehicleForces::prepareGround(int w, const Eigen::Vector3d& centre, const Ei
 
 void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
   const tyre::Envelope& e = envelopes_[w];
-  tyre::RoadProfile& p = wheels_[w].profile;
+  tyre::RoadProfile& p = state_->wheels[w].profile;
   const double R0 = tyres_[w].unloadedRadius();
   // The level shortcut is tried where the last step's road was level (or at
   // the start): on relief its ray and the terrain's check would be wasted.
@@ -186,7 +186,7 @@ bool VehicleForces::levelProfile(tyre::RoadProfile& p, double zTop, double reach
 }
 
 const tyre::ContactPlane& VehicleForces::groundAt(int w, const Eigen::Vector3d& centre) {
-  const WheelContact& c = wheels_[w];
+  const WheelContact& c = state_->wheels[w];
   if (!envelopes_[w].on || !options_.groundInsideStep) return c.plane;
   insideStep_[w] = tyre::effectivePlane(envelopes_[w], c.profile, centre);
   return insideStep_[w];
@@ -206,11 +206,11 @@ void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
 void VehicleForces::beginContacts(const std::array<Eigen::Vector3d, 4>& centres,
                                   const std::array<Eigen::Vector3d, 4>& spinAxes) {
   for (int w = 0; w < 4; ++w) prepareGround(w, centres[w], spinAxes[w]);
-  planesReady_ = true;
+  state_->planesReady = true;
 }
 
 double VehicleForces::brakeTorque(int w, double spin, double h) const {
-  const WheelContact& c = wheels_[w];
+  const WheelContact& c = state_->wheels[w];
   if (c.brakeCapacity <= 0) return 0.0;
   // Spring-damper on the spin since the wheel last slipped, saturated smoothly
   // at the available torque (a kink would make Newton cycle at the limit).
@@ -249,8 +249,8 @@ std::array<double, 4> VehicleForces::planarLoadShift(const Eigen::Vector3d& forw
   const PlanarLoads& P = *vehicle_.planar;
   double lateral[2] = {0, 0}, longitudinal = 0;
   for (int w = 0; w < 4; ++w) {
-    lateral[w / 2] += left.dot(wheels_[w].acceptedForce);
-    longitudinal += forward.dot(wheels_[w].acceptedForce);
+    lateral[w / 2] += left.dot(state_->wheels[w].acceptedForce);
+    longitudinal += forward.dot(state_->wheels[w].acceptedForce);
   }
   std::array<double, 4> out{};
   for (int a = 0; a < 2; ++a) {
@@ -297,7 +297,7 @@ void VehicleForces::antiRollBars(mb::Data& d) {
 }
 
 void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
-  const double h = std::max(0.0, t - lastAccepted_);
+  const double h = std::max(0.0, t - state_->lastAccepted);
   if (vehicle_.planar) planarLoads(d);
   if (!vehicle_.spec.antiRollBars.empty()) antiRollBars(d);
   // Each wheel's kinematics and spin relative to its carrier, once per
@@ -324,7 +324,7 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
 }
 
 void VehicleForces::applyDriveTorque(mb::Data& d, int w, const tyre::WheelKinematics& k) const {
-  const WheelContact& c = wheels_[w];
+  const WheelContact& c = state_->wheels[w];
   if (c.driveTorque == 0.0) return;
   const WheelLayout& wl = vehicle_.layout.wheels[w];
   const Eigen::Vector3d torque = c.driveTorque * k.spinAxis;
@@ -357,7 +357,7 @@ void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4
 
 double VehicleForces::drivelineTorques(double engine, const std::array<double, 4>& spins, double h) {
   const PowertrainSpec& P = *vehicle_.spec.powertrain;
-  DrivelineState& s = driveline_;
+  DrivelineState& s = state_->driveline;
   s.engineSpeed = engine;
   s.outputSpeed = drivenSpeed(spins);
   s.engineTorque = engineTorque(P.engine, s.engineSpeed, s.command.throttle);
@@ -371,7 +371,7 @@ double VehicleForces::drivelineTorques(double engine, const std::array<double, 4
   // coupling's torque from the faster wheels to the slower.
   const double share = s.command.ratio * s.clutchTorque / static_cast<double>(driven_.size());
   for (int w : driven_) {
-    wheels_[w].driveTorque = share - P.viscousCoupling * (spins[w] - s.outputSpeed);
+    state_->wheels[w].driveTorque = share - P.viscousCoupling * (spins[w] - s.outputSpeed);
   }
   return s.engineTorque - s.clutchTorque;
 }
@@ -408,7 +408,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
 
 const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKinematics& k, double h,
                                                      std::optional<double> load) {
-  const WheelContact& c = wheels_[w];
+  const WheelContact& c = state_->wheels[w];
   WheelOutput& o = outputs_[w];
   o.spinRate = k.spinRate;
   o.out = tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, load);
@@ -416,7 +416,7 @@ const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKine
 }
 
 void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext) {
-  WheelContact& c = wheels_[w];
+  WheelContact& c = state_->wheels[w];
   // Transient slips matter only in the low-speed range (the last
   // evaluation's state says whether the wheel is in it).
   const tyre::TyreOutput& out = outputs_[w].out;  // the step's last evaluation
@@ -440,7 +440,7 @@ void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double re
 }
 
 void VehicleForces::acceptDriveline(double engine, const std::array<double, 4>& spins, double h) {
-  DrivelineState& s = driveline_;
+  DrivelineState& s = state_->driveline;
   s.clutchDeflection = s.command.ratio == 0.0
                            ? 0.0
                            : advanceClutchDeflection(vehicle_.spec.powertrain->clutch, s.command.clutchCapacity,
@@ -448,8 +448,8 @@ void VehicleForces::acceptDriveline(double engine, const std::array<double, 4>& 
 }
 
 void VehicleForces::markAccepted(double t) {
-  lastAccepted_ = t;
-  planesReady_ = true;
+  state_->lastAccepted = t;
+  state_->planesReady = true;
 }
 
 }  // namespace bdfcar::vehicle

@@ -83,15 +83,17 @@ struct WheelOutput {
 class VehicleForces final : public mb::ForceProvider {
  public:
   VehicleForces(const Vehicle& vehicle, const terrain::Terrain& terrain, const TerrainContactOptions& options = {});
+  VehicleForces(const VehicleForces&) = delete;  // it points into its own state
+  VehicleForces& operator=(const VehicleForces&) = delete;
 
   // Inputs, held over a step.
-  void setDriveTorque(int wheel, double torque) { wheels_[wheel].driveTorque = torque; }
-  void setBrakeCapacity(int wheel, double torque) { wheels_[wheel].brakeCapacity = torque; }
+  void setDriveTorque(int wheel, double torque) { state_->wheels[wheel].driveTorque = torque; }
+  void setBrakeCapacity(int wheel, double torque) { state_->wheels[wheel].brakeCapacity = torque; }
   // A powertrain's command for the next step (ignored without one).
-  void setDriveline(const DrivelineCommand& c) { driveline_.command = c; }
-  const DrivelineState& driveline() const { return driveline_; }
+  void setDriveline(const DrivelineCommand& c) { state_->driveline.command = c; }
+  const DrivelineState& driveline() const { return state_->driveline; }
 
-  bool needsBeginStep() const override { return !planesReady_; }
+  bool needsBeginStep() const override { return !state_->planesReady; }
   void beginStep(const mb::Model& model, const mb::Data& data, double t) override;
   void apply(const mb::Model& model, mb::Data& data, double t) override;
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
@@ -119,7 +121,7 @@ class VehicleForces final : public mb::ForceProvider {
   double drivelineTorques(double engineSpeed, const std::array<double, 4>& spins, double h);
   void acceptDriveline(double engineSpeed, const std::array<double, 4>& spins, double h);
   void markAccepted(double t);
-  double sinceAccepted(double t) const { return std::max(0.0, t - lastAccepted_); }
+  double sinceAccepted(double t) const { return std::max(0.0, t - state_->lastAccepted); }
   // A planar model's load from its roll centres and pitch axis: the share of
   // each wheel's load the accepted tyre forces move (the base's forward and
   // left axes in the world).
@@ -127,7 +129,7 @@ class VehicleForces final : public mb::ForceProvider {
   // A model's own outputs of wheel w (the closed-form planar car's loads and corner springs).
   WheelOutput& output(int w) { return outputs_[w]; }
 
-  const std::array<WheelContact, 4>& wheels() const { return wheels_; }
+  const std::array<WheelContact, 4>& wheels() const { return state_->wheels; }
   // The latest evaluation's outputs (after apply(): a residual or a sample).
   const std::array<WheelOutput, 4>& outputs() const { return outputs_; }
   // Resets the per-step states (start of a run).
@@ -144,13 +146,11 @@ class VehicleForces final : public mb::ForceProvider {
     bool planesReady = false;
     bool operator==(const State&) const = default;
   };
-  State state() const { return {wheels_, driveline_, lastAccepted_, planesReady_}; }
-  void setState(const State& s) {
-    wheels_ = s.wheels;
-    driveline_ = s.driveline;
-    lastAccepted_ = s.lastAccepted;
-    planesReady_ = s.planesReady;
-  }
+  const State& state() const { return *state_; }
+  void setState(const State& s) { *state_ = s; }
+  // The force laws work on s from now on (a run state's, which the
+  // simulation owns); their own until then.
+  void bindState(State& s) { state_ = &s; }
 
   static constexpr double kBrakeStiffness = 1.0e5;  // N m/rad
   static constexpr double kBrakeDamping = 1.0e3;    // N m s/rad
@@ -179,7 +179,7 @@ class VehicleForces final : public mb::ForceProvider {
   // and the chassis; on a planar model also its tyres' loads.
   void antiRollBars(mb::Data& data);
   // The powertrain (powertrain.h): engine and clutch torques on the crank,
-  // the drive torques of the driven wheels into wheels_[w].driveTorque.
+  // the drive torques of the driven wheels into state_->wheels[w].driveTorque.
   void powertrain(mb::Data& data, double h, const std::array<double, 4>& spins);
   double engineSpeed(const mb::Data& data) const;
   // Mean of the driven wheels' spins relative to their carriers (spins: all four), + forward.
@@ -199,12 +199,10 @@ class VehicleForces final : public mb::ForceProvider {
   // The enveloping tyres' road, cast node by node (none without one: the
   // lattice's table is 0.6 MB).
   std::optional<terrain::HeightLattice> lattice_;
-  std::array<WheelContact, 4> wheels_;
+  State own_;              // the state until bindState
+  State* state_ = &own_;   // planesReady: contact planes of the next step prepared at acceptance
   std::array<WheelOutput, 4> outputs_;
-  DrivelineState driveline_;
   std::vector<int> driven_;  // the driven wheels
-  double lastAccepted_ = 0;
-  bool planesReady_ = false;  // contact planes of the next step prepared at acceptance
 };
 
 }  // namespace bdfcar::vehicle
