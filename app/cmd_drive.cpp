@@ -80,14 +80,10 @@ int runDrive(const DriveArgs& a) {
     std::printf("%s\n", stats.summary().c_str());
   }
   if (const auto c = session.courseResult()) {
-    if (c->entryTime < 0 && c->coneHits == 0 && c->passed)
-      std::printf("course: not entered\n");
-    else if (c->exitTime < 0)
-      std::printf("course: %s, %d cone%s hit, not completed\n", c->passed ? "clean" : "left the course", c->coneHits,
-                  c->coneHits == 1 ? "" : "s");
+    if (c->exitTime >= 0)
+      std::printf("course: %s, course time %.2f s\n", scenario::courseVerdict(*c).c_str(), c->exitTime - c->entryTime);
     else
-      std::printf("course: %s, %d cone%s hit, course time %.2f s\n", c->passed ? "clean" : "left the course",
-                  c->coneHits, c->coneHits == 1 ? "" : "s", c->exitTime - c->entryTime);
+      std::printf("course: %s\n", scenario::courseVerdict(*c).c_str());
   }
   if (session.resets() > 0)
     std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),

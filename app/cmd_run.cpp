@@ -90,9 +90,8 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
     reportMetrics(spec, sim, r, metrics);
   if (r.course) {
     const auto& cr = *r.course;
-    std::printf("ISO 3888-%d course: %s, %d cone%s hit, peak lateral acceleration %.2f m/s^2 (%.2f g)%s\n",
-                sim.course()->part, cr.passed ? "passed" : "FAILED", cr.coneHits, cr.coneHits == 1 ? "" : "s", cr.peakLateralAcceleration,
-                cr.peakLateralAcceleration / 9.81, cr.exitTime < 0 ? " (course not completed)" : "");
+    std::printf("ISO 3888-%d course: %s, peak lateral acceleration %.2f m/s^2 (%.2f g)\n", sim.course()->part,
+                scenario::courseVerdict(cr).c_str(), cr.peakLateralAcceleration, cr.peakLateralAcceleration / 9.81);
     if (!r.interrupted) return cr.passed && cr.exitTime >= 0 ? 0 : 4;
   }
   if (r.interrupted) {

@@ -46,7 +46,7 @@ int finishDemo(DriveSession& session, const DemoOptions& o) {
   }
   if (const auto c = session.courseResult()) {
     const bool done = c->exitTime >= 0;
-    std::printf("%s%s\n", courseVerdictLine(session).c_str(), done || !c->passed ? "" : " (course not completed)");
+    std::printf("%s\n", courseVerdictLine(session).c_str());
     return c->passed && done ? 0 : 4;
   }
   return 0;
@@ -55,12 +55,10 @@ int finishDemo(DriveSession& session, const DemoOptions& o) {
 std::string courseVerdictLine(const DriveSession& session) {
   const auto c = session.courseResult();
   if (!c) return "";
-  const bool done = c->exitTime >= 0;
   char line[256];
-  std::snprintf(line, sizeof line,
-                "ISO 3888-1 at %.0f km/h: %s, %d cone%s hit, peak a_y %.2f m/s^2 (%.2f g)",
-                session.spec().speedControl.profile.target * 3.6, c->passed && done ? "PASSED" : "FAILED", c->coneHits,
-                c->coneHits == 1 ? "" : "s", c->peakLateralAcceleration, c->peakLateralAcceleration / 9.81);
+  std::snprintf(line, sizeof line, "ISO 3888-%d at %.0f km/h: %s, peak a_y %.2f m/s^2 (%.2f g)",
+                session.spec().course.part, session.spec().speedControl.profile.target * 3.6,
+                scenario::courseVerdict(*c).c_str(), c->peakLateralAcceleration, c->peakLateralAcceleration / 9.81);
   return line;
 }
 

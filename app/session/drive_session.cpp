@@ -111,15 +111,10 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
       h.coneHits = c->coneHits;
       h.courseTime = c->entryTime < 0 ? 0.0 : (c->exitTime >= 0 ? c->exitTime : sample_.t) - c->entryTime;
     }
-    // A corner of the car outside the lanes fails the run at once; through
-    // the exit gate with none, it passes.
-    char why[96];
-    if (!c->passed) {
-      std::snprintf(why, sizeof why, "FAILED: left the lanes at x = %.0f m", c->firstFailureX);
-      h.verdict = why;
-    } else if (c->exitTime >= 0) {
-      h.verdict = "PASSED";
-    }
+    // A corner of the car outside the lanes or a cone hit fails the run at
+    // once; through the exit gate with neither, it passes.
+    if (!c->passed) h.verdict = "FAILED: " + scenario::courseVerdict(*c).substr(std::string("failed: ").size());
+    else if (c->exitTime >= 0) h.verdict = "PASSED";
   }
   h.message = failed() ? failure() : message;
   return h;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include "portable_math.h"
 
 namespace bdfcar::scenario {
@@ -35,7 +36,8 @@ void CourseJudge::update(const vehicle::VehicleSample& s) {
   for (double a : {-1.0, 1.0})
     for (double b : {-1.0, 1.0}) {
       const Eigen::Vector2d corner = c + a * halfLength_ * heading + b * halfWidth_ * left;
-      if (r_.passed && !course_.contains(corner.x(), corner.y())) {
+      if (!r_.leftLanes && !course_.contains(corner.x(), corner.y())) {
+        r_.leftLanes = true;
         r_.passed = false;
         r_.firstFailureX = corner.x();
       }
@@ -47,9 +49,36 @@ void CourseJudge::update(const vehicle::VehicleSample& s) {
         std::abs(d.dot(left)) <= halfWidth_ + kConeBaseRadius) {
       hit_[i] = true;
       ++r_.coneHits;
+      r_.passed = false;
       r_.knockedCones.emplace_back(static_cast<int>(i), pm::atan2(heading.y(), heading.x()));
     }
   }
+}
+
+std::string courseVerdict(const CourseResult& r) {
+  std::string why;
+  char text[80];
+  if (r.leftLanes) {
+    std::snprintf(text, sizeof text, "left the lanes at x = %.1f m", r.firstFailureX);
+    why = text;
+  }
+  if (r.coneHits > 0) {
+    // The gates, each once, in the order along the course.
+    std::vector<int> gates;
+    for (const auto& [index, heading] : r.knockedCones) gates.push_back(coneGate(index));
+    std::sort(gates.begin(), gates.end());
+    gates.erase(std::unique(gates.begin(), gates.end()), gates.end());
+    std::string list;
+    for (size_t i = 0; i < gates.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == gates.size() ? " and " : ", ") + std::to_string(gates[i]);
+    if (!why.empty()) why += ", ";
+    why += std::to_string(r.coneHits) + (r.coneHits == 1 ? " cone" : " cones") + " hit at gate" +
+           (gates.size() == 1 ? " " : "s ") + list;
+  }
+  if (!why.empty()) return "failed: " + why;
+  if (r.entryTime < 0) return "not reached";
+  if (r.exitTime < 0) return "not completed";
+  return "passed";
 }
 
 }  // namespace bdfcar::scenario

@@ -41,7 +41,9 @@ struct Iso3888Course {
   // True if the point is inside the course (always true in sections 2 and 4).
   bool contains(double x, double y) const;
   // Cone positions (ground level) along both limits of the three lanes,
-  // spaced at most `spacing` m apart, kConeBaseRadius outside the limits.
+  // spaced at most `spacing` m apart, kConeBaseRadius outside the limits:
+  // gate by gate along the course, the pair across the lane (left, right),
+  // so cones 2k and 2k + 1 make gate k + 1.
   std::vector<Eigen::Vector3d> cones(double spacing = 2.5) const;
   // A smooth reference centreline y(x) through the lane centres (cosine blends over sections 2 and 4).
   double referenceY(double x) const;
