@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   addKcCommand(app, commands);
   addTyreCommand(app, commands);
   addRunCommand(app, commands);
+  addLimitCommand(app, commands);
   addSweepCommand(app, commands);
   addReportCommand(app, commands);
   addSoakCommand(app, commands);

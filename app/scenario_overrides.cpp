@@ -36,6 +36,10 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
                  "lateral acceleration; default 10: the planar model where the scene allows it)")
       ->check(CLI::Range(0.0, 100.0));
   cmd.add_option("--vehicle", ov.vehicle, "Vehicle file replacing the scenario's")->check(CLI::ExistingFile);
+  cmd.add_option("--driver", ov.driver,
+                 "The path-following driver's steering law: pure_pursuit, or preview (MacAdam's preview driver as a "
+                 "model-predictive controller on the car's single-track model; docs/STANDARD_TESTS.md)")
+      ->check(CLI::IsMember({"pure_pursuit", "preview"}));
   cmd.add_option("--duration", ov.duration, "Manoeuvre duration, s")->check(CLI::Range(1e-3, 1e6));
   cmd.add_flag("--as-published", ov.asPublished,
                "The paper's Newton as published: the fixed count only, no Jacobian refresh or rescue "
@@ -77,6 +81,13 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.jacobianEvery) bdf.jacobianEvery = *ov.jacobianEvery;
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
+  if (ov.driver) {
+    if (!spec.pathFollower.enabled)
+      throw std::runtime_error("--driver " + *ov.driver + ": " + spec.sourceFile +
+                               " has no path-following [driver] (its steering is scripted)");
+    spec.pathFollower.law = *ov.driver == "preview" ? scenario::PathFollowerSpec::Law::Preview
+                                                    : scenario::PathFollowerSpec::Law::PurePursuit;
+  }
   if (ov.fidelity) scenario::parseFidelity(*ov.fidelity, spec.fidelity);
   if (ov.errorBudget) spec.fidelity.errorBudget = *ov.errorBudget / 100.0;
   if (ov.settle) spec.settleTime = *ov.settle;

@@ -15,6 +15,7 @@ namespace bdfcar::app {
 struct ScenarioOverrides {
   std::optional<double> step, tick, duration, settle, errorBudget;
   std::optional<std::string> integrator, vehicle, fidelity;
+  std::optional<std::string> driver;  // the path-following driver's steering law
   std::optional<int> order, newton, jacobianEvery;
   bool asPublished = false;  // the paper's Newton as published: no refresh when it stops contracting
   std::vector<std::string> settings;  // --set KEY=VALUE, in the order given

@@ -79,9 +79,20 @@ Eigen::Vector2d PolylinePath::at(double s) const {
 }
 
 Eigen::Vector2d PolylinePath::target(double x, double y, double lookAhead) const {
+  return at(nearest(Eigen::Vector2d(x, y)).s + lookAhead);
+}
+
+double PolylinePath::offset(double x, double y) const {
   const Eigen::Vector2d q(x, y);
+  const Nearest n = nearest(q);
+  const Eigen::Vector2d d = p_[n.index + 1] - p_[n.index], e = q - p_[n.index];
+  const double side = d.x() * e.y() - d.y() * e.x();  // + left of the segment's direction
+  return std::sqrt(n.dist) * (side < 0 ? -1.0 : 1.0);
+}
+
+PolylinePath::Nearest PolylinePath::nearest(const Eigen::Vector2d& q) const {
   const Eigen::Vector2d g = (q - gridOrigin_) / cell_;
-  if (!(g.x() >= 0 && g.y() >= 0 && g.x() < cols_ && g.y() < rows_)) return at(scanAll(q).s + lookAhead);
+  if (!(g.x() >= 0 && g.y() >= 0 && g.x() < cols_ && g.y() < rows_)) return scanAll(q);
   const int cx = static_cast<int>(g.x()), cy = static_cast<int>(g.y());
   Nearest n;
   const int rings = std::max({cx, cols_ - 1 - cx, cy, rows_ - 1 - cy});
@@ -109,7 +120,7 @@ Eigen::Vector2d PolylinePath::target(double x, double y, double lookAhead) const
       visit(r, cx + ring);
     }
   }
-  return at(n.s + lookAhead);
+  return n;
 }
 
 Eigen::Vector2d CirclePath::target(double x, double y, double lookAhead) const {

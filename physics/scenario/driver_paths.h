@@ -25,6 +25,8 @@ class PolylinePath {
   // At least two points, no two consecutive ones equal (the loader checks).
   PolylinePath(std::vector<Eigen::Vector2d> points, bool closed);
   Eigen::Vector2d target(double x, double y, double lookAhead) const;
+  // The signed distance of (x, y) from the path (its first nearest point), + left of its direction.
+  double offset(double x, double y) const;
   double length() const { return s_.back(); }
 
  private:
@@ -42,6 +44,7 @@ class PolylinePath {
   };
   void consider(size_t segment, const Eigen::Vector2d& q, Nearest& n) const;
   Nearest scanAll(const Eigen::Vector2d& q) const;
+  Nearest nearest(const Eigen::Vector2d& q) const;
   void buildGrid();
   std::vector<Eigen::Vector2d> p_;
   std::vector<double> s_;  // arc length at each point

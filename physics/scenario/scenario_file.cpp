@@ -416,6 +416,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     f.enabled = true;
     f.lookAheadTime = d->number("look_ahead_time", Dimension::Time, kLookAheadTime, f.lookAheadTime);
     f.minLookAhead = d->number("min_look_ahead", Dimension::Length, kLookAhead, f.minLookAhead);
+    f.law = d->choice("law", {"pure_pursuit", "preview"}, "pure_pursuit") == "preview" ? PathFollowerSpec::Law::Preview
+                                                                                      : PathFollowerSpec::Law::PurePursuit;
+    f.previewTime = d->number("preview_time", Dimension::Time, Range{0.2, 5.0}, f.previewTime);
+    f.lineMargin = d->number("line_margin", Dimension::Length, Range{0.0, 1.0}, f.lineMargin);
     if (type == "path") {
       f.path = PathFollowerSpec::Path::Polyline;
       std::string path;

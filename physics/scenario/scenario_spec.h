@@ -63,6 +63,13 @@ struct PathFollowerSpec {
   // (a CSV of x, y, or a track's centre line from the terrain), or a circle
   // through the start.
   enum class Path { Course, Polyline, Circle } path = Path::Course;
+  // How it steers: pure pursuit of a point a look-ahead ahead (path_follower.h),
+  // or MacAdam's preview driver, which knows the car (preview_driver.h): it
+  // follows the path through a course computed for the car's footprint
+  // (course_line.h), grown by lineMargin on every side.
+  enum class Law { PurePursuit, Preview } law = Law::PurePursuit;
+  double previewTime = 1.5;    // s
+  double lineMargin = 0.15;    // m
   std::vector<Eigen::Vector2d> points;
   bool closed = false;
   double radius = 0;           // m

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "multibody/kinematics.h"
+#include "scenario/course_line.h"
 #include "vehicle/derivation_cache.h"
 #include "vehicle/motion_ratio.h"
 #include "portable_math.h"
@@ -133,11 +134,44 @@ Simulation::Simulation(std::shared_ptr<const World> world)
                  side * f.radius * Eigen::Vector2d(-pm::sin(spec.startHeading), pm::cos(spec.startHeading));
       target = [c](double x, double y, double, double L) { return c.target(x, y, L); };
     }
-    follower_.emplace(p, target, state_.follower);
+    if (f.law == PathFollowerSpec::Law::Preview) {
+      PreviewDriverParams pp = previewDriverParams(veh, startFriction(), spec.tick);
+      pp.previewTime = f.previewTime;
+      preview_.emplace(pp, pathOffset(veh));
+    }
+    else
+      follower_.emplace(p, target, state_.follower);
   }
 }
 
 Simulation::~Simulation() = default;
+
+double Simulation::startFriction() const {
+  const terrain::Hit g = world_->terrain->castRay(Eigen::Vector3d(spec().startX, spec().startY, 1e3),
+                                                  -Eigen::Vector3d::UnitZ(), 2e3);
+  return g.hit ? g.friction : 1.0;
+}
+
+PathOffset Simulation::pathOffset(const vehicle::Vehicle& veh) const {
+  const PathFollowerSpec& f = spec().pathFollower;
+  if (f.path == PathFollowerSpec::Path::Course) {
+    // The line through the course for this car's footprint, followed by the
+    // chassis' centre of mass (the footprint's centre from it).
+    const auto& g = veh.spec.geometry;
+    const mb::Vec3 com = veh.model.bodies[veh.layout.chassis].com;
+    const CourseLine line = computeCourseLine(*world_->course, g.length, vehicleWidth(veh),
+                                              Eigen::Vector2d(g.bodyOffset.x() - com.x(), g.bodyOffset.y() - com.y()),
+                                              f.lineMargin);
+    return [line](double x, double y) { return y - line.y(x); };
+  }
+  if (f.path == PathFollowerSpec::Path::Polyline)
+    return [path = PolylinePath(f.points, f.closed)](double x, double y) { return path.offset(x, y); };
+  const double side = f.direction;
+  const Eigen::Vector2d centre = Eigen::Vector2d(spec().startX, spec().startY) +
+                                 side * f.radius * Eigen::Vector2d(-pm::sin(spec().startHeading), pm::cos(spec().startHeading));
+  // + inside a left-hand circle (left of its direction), outside a right-hand one.
+  return [centre, side, R = f.radius](double x, double y) { return side * (R - (Eigen::Vector2d(x, y) - centre).norm()); };
+}
 
 Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();

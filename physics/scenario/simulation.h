@@ -29,6 +29,7 @@
 #include "scenario/fidelity_policy.h"
 #include "scenario/iso3888_course.h"
 #include "scenario/path_follower.h"
+#include "scenario/preview_driver.h"
 #include "scenario/rung_certificate.h"
 #include "scenario/scenario_spec.h"
 #include "scenario/signals.h"
@@ -241,7 +242,7 @@ class Simulation {
   StartPose startPose() const;
   struct ChassisState {
     Eigen::Vector3d com;
-    double yaw = 0, vx = 0, yawRate = 0;
+    double yaw = 0, vx = 0, vy = 0, yawRate = 0;  // vx, vy: the centre of mass's, chassis axes
   };
   ChassisState chassisState() const;
   std::unique_ptr<integ::Integrator> makeIntegrator(integ::Dae& dae) const;
@@ -252,6 +253,10 @@ class Simulation {
   // From the active rung's velocities (multibody: the multibody model's coordinates).
   DrivelineSpeeds drivelineSpeeds(const integ::Vec& v, double vx, bool multibody = false) const;
   void steerToward(double command);
+  // The road's friction under the start (the preview driver's grip).
+  double startFriction() const;
+  // The preview driver's path: the follower's, as signed distances.
+  PathOffset pathOffset(const vehicle::Vehicle& veh) const;
 
   // One model of the vehicle with its force laws and integrator. A derived
   // model steps in closed form where one carries it (car: its own force
@@ -295,6 +300,7 @@ class Simulation {
   double switchJump_ = 0;  // m, for the telemetry: see takeSwitchJump
   std::optional<SpeedController> speed_;
   std::optional<PathFollower> follower_;
+  std::optional<PreviewDriver> preview_;  // [driver] law = "preview" (the follower's path, its own steering law)
   std::optional<Transmission> transmission_;
   RackSignal rack_;
   SteeringLimits steeringLimits_;

@@ -102,13 +102,14 @@ Simulation::ChassisState Simulation::chassisState() const {
     const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
     const double* qb = p.q.data() + (car_ ? 0 : b.qIndex);
     const int bv = car_ ? 0 : b.vIndex;
-    const double u = p.v(bv), r = p.v(bv + 2);
+    const double u = p.v(bv), w = p.v(bv + 1), r = p.v(bv + 2);
     const Eigen::Vector3d c = vehicle().planar->comInBase;
     const double cy = pm::cos(qb[2]), sy = pm::sin(qb[2]);
     ChassisState s;
     s.com = Eigen::Vector3d(qb[0] + cy * c.x() - sy * c.y(), qb[1] + sy * c.x() + cy * c.y(), c.z());
     s.yaw = qb[2];
     s.vx = u - r * c.y();
+    s.vy = w + r * c.x();
     s.yawRate = r;
     return s;
   }
@@ -120,7 +121,9 @@ Simulation::ChassisState Simulation::chassisState() const {
   ChassisState s;
   s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
   s.yaw = pm::atan2(R(1, 0), R(0, 0));
-  s.vx = (vb + wb.cross(ch.com)).x();
+  const Eigen::Vector3d vCom = vb + wb.cross(ch.com);
+  s.vx = vCom.x();
+  s.vy = vCom.y();
   s.yawRate = wb.z();
   return s;
 }
@@ -141,6 +144,11 @@ void Simulation::beginTick(const std::optional<DriverInput>& input) {
     state_.input.clutch = std::clamp(input->clutch, 0.0, 1.0);
     state_.input.clutchPedal = input->clutchPedal;
     state_.input.shift = input->shift > 0 ? 1 : input->shift < 0 ? -1 : 0;
+    steerToward(state_.input.steer);
+  } else if (preview_ && time() >= 0) {
+    const ChassisState s = chassisState();
+    const double t = time();
+    state_.input.steer = preview_->steer({s.com.x(), s.com.y(), s.yaw, s.vx, s.vy, s.yawRate, rack_.steerAt(t), rack_.rateAt(t)});
     steerToward(state_.input.steer);
   } else if (follower_ && time() >= 0) {
     const ChassisState s = chassisState();

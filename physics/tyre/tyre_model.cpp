@@ -1,6 +1,7 @@
 #include "tyre/tyre_model.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "portable_math.h"
 
@@ -24,6 +25,12 @@ double peakFriction(const TyreParams& p, double mu) {
   if (const auto* pac = std::get_if<Pac2002Params>(&p)) return pac2002PeakFriction(*pac, mu);
   const FialaParams& f = std::get<FialaParams>(p);
   return f.uMax * std::clamp(mu, 0.1, 1.0) / f.referenceFriction;
+}
+
+double corneringStiffness(const TyreParams& p, double Fz) {
+  if (const auto* pac = std::get_if<Pac2002Params>(&p))
+    return std::abs(magicFormula(*pac, 0.0, 0.0, 0.0, Fz, pac->referenceFriction).Ky);
+  return std::get<FialaParams>(p).corneringStiffness;
 }
 
 const EnvelopeSpec& contact(const TyreParams& p) {

@@ -20,6 +20,9 @@ double verticalStiffness(const TyreParams& p);  // N/m
 double verticalDamping(const TyreParams& p);    // N s/m
 // The largest force per unit load the tyre gives on ground of friction mu.
 double peakFriction(const TyreParams& p, double mu);
+// Its cornering stiffness (N/rad, the lateral force's slope at zero slip
+// angle) at normal load Fz: Fiala's C_alpha, the Magic Formula's K_y there.
+double corneringStiffness(const TyreParams& p, double Fz);
 // Its contact geometry (point or enveloping, tyre/envelope.h).
 const EnvelopeSpec& contact(const TyreParams& p);
 

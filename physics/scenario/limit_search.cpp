@@ -1,0 +1,92 @@
+#include "scenario/limit_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+namespace bdfcar::scenario {
+
+namespace {
+
+// The trials at these speeds, `jobs` at a time; the first exception rethrown after.
+std::vector<LimitTrial> runRound(const std::vector<double>& speeds, int jobs, const LimitTrialFunction& trial) {
+  std::vector<LimitTrial> out(speeds.size());
+  std::vector<std::exception_ptr> errors(speeds.size());
+  for (size_t begin = 0; begin < speeds.size(); begin += static_cast<size_t>(jobs)) {
+    const size_t end = std::min(speeds.size(), begin + static_cast<size_t>(jobs));
+    std::vector<std::thread> threads;
+    for (size_t i = begin; i < end; ++i)
+      threads.emplace_back([&, i] {
+        try {
+          out[i] = trial(speeds[i]);
+          out[i].speed = speeds[i];
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      });
+    for (std::thread& t : threads) t.join();
+  }
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
+}  // namespace
+
+LimitResult searchLimit(const LimitSearchSpec& spec, const LimitTrialFunction& trial) {
+  if (!(spec.from > 0) || !(spec.to > spec.from) || !(spec.resolution > 0))
+    throw std::invalid_argument("limit search: needs 0 < from < to and a positive resolution");
+  const int jobs = std::max(1, spec.jobs);
+  LimitResult r;
+  auto record = [&](const std::vector<LimitTrial>& ts) { r.trials.insert(r.trials.end(), ts.begin(), ts.end()); };
+  const std::vector<LimitTrial> ends = runRound({spec.from, spec.to}, jobs, trial);
+  record(ends);
+  if (!ends[0].passed) return r;
+  r.anyPass = true;
+  if (ends[1].passed) {
+    r.allPass = true;
+    r.highestPass = spec.to;
+    return r;
+  }
+  double lo = spec.from, hi = spec.to;
+  while (hi - lo > spec.resolution) {
+    std::vector<double> speeds;
+    for (int k = 1; k <= jobs; ++k) speeds.push_back(lo + (hi - lo) * k / (jobs + 1));
+    const std::vector<LimitTrial> ts = runRound(speeds, jobs, trial);
+    record(ts);
+    // The lowest failing speed of the round bounds it above; the highest
+    // passing speed below that, below.
+    double newHi = hi;
+    for (const LimitTrial& t : ts)
+      if (!t.passed) newHi = std::min(newHi, t.speed);
+    double newLo = lo;
+    for (const LimitTrial& t : ts) {
+      if (t.passed && t.speed < newHi) newLo = std::max(newLo, t.speed);
+      if (t.passed && t.speed > newHi) r.nonMonotone = true;
+    }
+    lo = newLo;
+    hi = newHi;
+  }
+  r.highestPass = lo;
+  r.lowestFail = hi;
+  return r;
+}
+
+std::string LimitResult::describe() const {
+  char text[200];
+  if (trials.empty()) return "no trial";
+  const double from = trials[0].speed * 3.6, to = trials[1].speed * 3.6;
+  if (!anyPass)
+    std::snprintf(text, sizeof text, "no passing speed between %.1f and %.1f km/h", from, to);
+  else if (allPass)
+    std::snprintf(text, sizeof text, "passes at %.1f km/h, the top of the range searched (%.1f-%.1f km/h)", to, from, to);
+  else
+    std::snprintf(text, sizeof text, "highest passing speed %.1f km/h (fails at %.1f km/h)%s", highestPass * 3.6,
+                  lowestFail * 3.6, nonMonotone ? "; a pass was seen above a fail: passing is not monotone here" : "");
+  return text;
+}
+
+}  // namespace bdfcar::scenario
