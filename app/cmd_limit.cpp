@@ -22,41 +22,6 @@ namespace bdfcar::app {
 
 namespace {
 
-// The scenario at entry speed v: its start and its speed hold at v, the
-// hold's release (the throttle let go at the entry gate) and the duration
-// scaled to the time the car takes to cover the same ground.
-scenario::ScenarioSpec atSpeed(const scenario::ScenarioSpec& base, double v) {
-  scenario::ScenarioSpec s = base;
-  const double v0 = base.speedControl.enabled ? base.speedControl.profile.target : base.initialSpeed;
-  const double scale = v0 > 0 ? v0 / v : 1.0;
-  s.initialSpeed = v;
-  if (s.speedControl.enabled) {
-    scenario::SpeedProfile& p = s.speedControl.profile;
-    p.target = v;
-    if (std::isfinite(p.end)) p.end *= scale;
-    if (std::isfinite(p.start) && p.start > 0) p.start *= scale;
-  }
-  // The same ground covered (the car rolls through the settling too).
-  if (scale > 1) s.duration = (base.settleTime + base.duration) * scale - base.settleTime;
-  return s;
-}
-
-scenario::LimitTrial trialAt(const scenario::ScenarioSpec& base, double v, const std::string& telemetry = "") {
-  scenario::Simulation sim(atSpeed(base, v));
-  scenario::RunOptions opt;
-  opt.telemetryPath = telemetry;
-  opt.sample = true;
-  const scenario::RunResult r = scenario::runScenario(sim, opt);
-  scenario::LimitTrial t;
-  if (!r.ok) {
-    t.verdict = "the run failed: " + r.failure;
-    return t;
-  }
-  t.passed = r.course->passed && r.course->exitTime >= 0;
-  t.verdict = scenario::courseVerdict(*r.course);
-  return t;
-}
-
 int runLimit(const std::string& path, double from, double to, double resolution, int jobs, const std::string& out,
              const ScenarioOverrides& ov) {
   const scenario::ScenarioSpec base = loadScenario(path, ov);
@@ -75,7 +40,7 @@ int runLimit(const std::string& path, double from, double to, double resolution,
   std::fflush(stdout);
   std::mutex print;
   const scenario::LimitResult r = scenario::searchLimit(s, [&](double v) {
-    scenario::LimitTrial t = trialAt(base, v);
+    scenario::LimitTrial t = scenario::courseTrial(base, v);
     const std::lock_guard<std::mutex> lock(print);
     std::printf("  %6.2f km/h: %s\n", v * 3.6, t.verdict.c_str());
     std::fflush(stdout);
@@ -91,8 +56,8 @@ int runLimit(const std::string& path, double from, double to, double resolution,
       const std::filesystem::path dir = std::filesystem::path(out) / name;
       std::filesystem::create_directories(dir);
       const std::string csv = (dir / "telemetry.csv").string();
-      trialAt(base, v, csv);
-      const scenario::ScenarioSpec spec = atSpeed(base, v);
+      scenario::courseTrial(base, v, csv);
+      const scenario::ScenarioSpec spec = scenario::courseScenarioAt(base, v);
       scenario::Simulation sim(spec);  // its course, sized to the car
       const std::string why = plotDrive(csv, dir.string(), sim.course(), spec.name + " at " + name);
       std::printf("%s: %s%s\n", what, dir.string().c_str(), why.empty() ? "" : (" (no plots: " + why + ")").c_str());

@@ -22,6 +22,7 @@ void addKcCommand(CLI::App& app, CommandList& commands);
 void addTyreCommand(CLI::App& app, CommandList& commands);
 void addRunCommand(CLI::App& app, CommandList& commands);
 void addLimitCommand(CLI::App& app, CommandList& commands);
+void addStandardCommand(CLI::App& app, CommandList& commands);
 void addSweepCommand(CLI::App& app, CommandList& commands);
 void addReportCommand(CLI::App& app, CommandList& commands);
 void addSoakCommand(CLI::App& app, CommandList& commands);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   addTyreCommand(app, commands);
   addRunCommand(app, commands);
   addLimitCommand(app, commands);
+  addStandardCommand(app, commands);
   addSweepCommand(app, commands);
   addReportCommand(app, commands);
   addSoakCommand(app, commands);

@@ -14,6 +14,7 @@
 #include "scenario/preview_driver.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
+#include "single_track_drive.h"
 #include "test_files.h"
 
 using namespace bdfcar;
@@ -32,26 +33,6 @@ vehicle::SingleTrack testCar() {
   return c;
 }
 
-// The model's equations by classical RK4 at step h from rest, with
-// delta(t) given; returns the lateral acceleration at the end.
-template <class Delta>
-double integrateLateral(const vehicle::SingleTrack& c, double u, double T, Delta delta) {
-  const double h = 1e-4;
-  double vy = 0, r = 0;
-  const long n = std::lround(T / h);
-  for (long i = 0; i < n; ++i) {
-    const double t = i * h;
-    double k1v, k1r, k2v, k2r, k3v, k3r, k4v, k4r;
-    c.derivatives(u, vy, r, delta(t), k1v, k1r);
-    c.derivatives(u, vy + 0.5 * h * k1v, r + 0.5 * h * k1r, delta(t + 0.5 * h), k2v, k2r);
-    c.derivatives(u, vy + 0.5 * h * k2v, r + 0.5 * h * k2r, delta(t + 0.5 * h), k3v, k3r);
-    c.derivatives(u, vy + h * k3v, r + h * k3r, delta(t + h), k4v, k4r);
-    vy += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    r += h / 6 * (k1r + 2 * k2r + 2 * k3r + k4r);
-  }
-  return c.lateralAcceleration(u, vy, r, delta(T));
-}
-
 }  // namespace
 
 // The steady gain u^2 / (L + K u^2) and the ramp's lag against the
@@ -62,11 +43,11 @@ TEST(SingleTrack, SteadyGainAndRampLagAreTheEquations) {
   EXPECT_GT(c.understeerGradient(), 0.0);  // front lighter-tyred: understeer
   for (double u : {10.0, 20.0, 30.0}) {
     SCOPED_TRACE(u);
-    const double held = integrateLateral(c, u, 20.0, [](double) { return 0.01; });
+    const double held = test::drive(c, u, 20.0, [](double) { return 0.01; }, 1.0).ay.back();
     EXPECT_NEAR(held, c.steadyLateralGain(u) * 0.01, 1e-6 * held);
     const double rate = 0.02;  // rad/s of road-wheel angle
     const double T = 20.0;
-    const double ramp = integrateLateral(c, u, T, [&](double t) { return rate * t; });
+    const double ramp = test::drive(c, u, T, [&](double t) { return rate * t; }, 1.0).ay.back();
     EXPECT_NEAR(ramp, c.steadyLateralGain(u) * rate * (T - c.rampLag(u)), 1e-5 * ramp);
   }
 }

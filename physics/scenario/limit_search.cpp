@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "scenario/run.h"
+
 namespace bdfcar::scenario {
 
 namespace {
@@ -73,6 +75,42 @@ LimitResult searchLimit(const LimitSearchSpec& spec, const LimitTrialFunction& t
   r.highestPass = lo;
   r.lowestFail = hi;
   return r;
+}
+
+// The scenario at entry speed v: its start and its speed hold at v, the
+// hold's release (the throttle let go at the entry gate) and the duration
+// scaled to the time the car takes to cover the same ground.
+ScenarioSpec courseScenarioAt(const ScenarioSpec& base, double v) {
+  ScenarioSpec s = base;
+  const double v0 = base.speedControl.enabled ? base.speedControl.profile.target : base.initialSpeed;
+  const double scale = v0 > 0 ? v0 / v : 1.0;
+  s.initialSpeed = v;
+  if (s.speedControl.enabled) {
+    SpeedProfile& p = s.speedControl.profile;
+    p.target = v;
+    if (std::isfinite(p.end)) p.end *= scale;
+    if (std::isfinite(p.start) && p.start > 0) p.start *= scale;
+  }
+  // The same ground covered (the car rolls through the settling too).
+  if (scale > 1) s.duration = (base.settleTime + base.duration) * scale - base.settleTime;
+  return s;
+}
+
+LimitTrial courseTrial(const ScenarioSpec& base, double v, const std::string& telemetry) {
+  Simulation sim(courseScenarioAt(base, v));
+  RunOptions opt;
+  opt.telemetryPath = telemetry;
+  opt.sample = true;
+  opt.keepSamples = false;  // the judge sees every sample; nothing else needs them
+  const RunResult r = runScenario(sim, opt);
+  LimitTrial t;
+  if (!r.ok) {
+    t.verdict = "the run failed: " + r.failure;
+    return t;
+  }
+  t.passed = r.course->passed && r.course->exitTime >= 0;
+  t.verdict = courseVerdict(*r.course);
+  return t;
 }
 
 std::string LimitResult::describe() const {

@@ -47,4 +47,13 @@ struct LimitResult {
 using LimitTrialFunction = std::function<LimitTrial(double speed)>;
 LimitResult searchLimit(const LimitSearchSpec& spec, const LimitTrialFunction& trial);
 
+struct ScenarioSpec;
+// A course scenario at entry speed v (m/s): its start and its speed hold at
+// v, the hold's release (the throttle let go at the entry gate) and the
+// duration scaled so that the car covers the same ground.
+ScenarioSpec courseScenarioAt(const ScenarioSpec& base, double v);
+// One trial: the course scenario run at v, passed when through the exit
+// gate with no corner out and no cone down; the telemetry written where given.
+LimitTrial courseTrial(const ScenarioSpec& base, double v, const std::string& telemetry = "");
+
 }  // namespace bdfcar::scenario
