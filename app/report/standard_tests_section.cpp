@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "report/studies.h"
+#include "scenario/limit_search.h"
 #include "scenario/run_metrics.h"
 #include "scenario/standard_tests.h"
 #include "vehicle/vehicle_file.h"
@@ -47,6 +48,25 @@ void standardTestsSection(std::ostream& md, const std::string& vehicleFile) {
     command(md, std::string("assets/scenarios/") + file + (sedan ? "" : " --vehicle " + vehicleFile) +
                     " --metrics metrics.json");
   }
+  // The highest passing speeds through the courses, each driver (bdfcar limit).
+  md << "The highest passing entry speed through each course (`bdfcar limit`, 30-100 km/h to 0.5 km/h; no corner "
+        "out of a lane, no cone down), the look-ahead follower against the preview driver:\n\n"
+        "| course | pure pursuit | preview driver |\n|---|---|---|\n";
+  for (const char* file : {"iso_lane_change.toml", "standard/iso3888_2_obstacle_avoidance_60.toml"}) {
+    scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset(std::string("scenarios/") + file));
+    if (!sedan) spec.vehicleFile = vehicleFile;
+    md << "| `" << file << "` |";
+    for (auto law : {scenario::PathFollowerSpec::Law::PurePursuit, scenario::PathFollowerSpec::Law::Preview}) {
+      spec.pathFollower.law = law;
+      scenario::LimitSearchSpec ls;
+      ls.jobs = 2;
+      md << " " << scenario::searchLimit(ls, [&](double v) { return scenario::courseTrial(spec, v); }).describe() << " |";
+    }
+    md << "\n";
+  }
+  md << "\n";
+  md << "Command: `bdfcar limit assets/scenarios/standard/iso3888_2_obstacle_avoidance_60.toml --driver preview"
+     << (sedan ? "" : " --vehicle " + vehicleFile) << "` (and without `--driver`, and on iso_lane_change.toml)\n\n";
 }
 
 }  // namespace bdfcar::app
