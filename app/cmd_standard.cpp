@@ -26,6 +26,7 @@
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 #include "scenario/standard_tests.h"
+#include "session/plots.h"
 
 namespace bdfcar::app {
 
@@ -83,6 +84,17 @@ std::string telemetryFile(const Setup& s, const std::string& name) {
   return s.outDir.empty() ? std::string() : (std::filesystem::path(s.outDir) / (name + ".csv")).string();
 }
 
+std::string png(const Setup& s, const std::string& name) {
+  return (std::filesystem::path(s.outDir) / (name + ".png")).string();
+}
+
+// A plot of the runs' telemetry beside the sheet, named in it.
+void plot(std::ostream& md, const CsvPlot& p) {
+  const std::string why = plotCsvColumns({p}, p.png + ".gp");
+  md << (why.empty() ? "Plot: " + std::filesystem::path(p.png).filename().string() : "(no plot: " + why + ")")
+     << "\n\n";
+}
+
 void progress(const char* what) {
   std::fprintf(stderr, "standard: %s\n", what);
   std::fflush(stderr);
@@ -105,6 +117,10 @@ void iso7401(std::ostream& md, const Setup& s) {
      << " deg of steering wheel gives " << m.ay.steady << " m/s^2 steady (asked 4 m/s^2, " << c.tries.size()
      << " runs" << (c.converged ? "" : "; NOT within 0.5 %: the car cannot reach it") << ").\n\n```\n"
      << scenario::describe(m) << "```\n\n";
+  if (!s.outDir.empty())
+    plot(md, {telemetryFile(s, "iso7401_step_steer"), png(s, "iso7401_step_steer"),
+              "ISO 7401 step steer: yaw rate (rad/s) and lateral acceleration (m/s^2)", "time_s",
+              {"yawrate_radps", "ay_mps2"}});
 }
 
 // FMVSS 126: A from the slowly increasing steer, then the series.
@@ -158,8 +174,18 @@ void fmvss126(std::ostream& md, const Setup& s) {
     const double sign = k % 2 == 0 ? 1.0 : -1.0;
     scenario::ScenarioSpec t = base;
     t.steering.level = sign * std::min(1.0, amplitudes[i] / full);
-    (sign > 0 ? left : right)[i] = scenario::fmvss126SineWithDwell(run(t).history);
+    // The largest amplitude's runs kept (the series' hardest).
+    const std::string keep = i + 1 == n ? telemetryFile(s, sign > 0 ? "fmvss126_largest_left" : "fmvss126_largest_right") : "";
+    (sign > 0 ? left : right)[i] = scenario::fmvss126SineWithDwell(run(t, keep).history);
   });
+  if (!s.outDir.empty()) {
+    plot(md, {telemetryFile(s, "fmvss126_sis"), png(s, "fmvss126_sis"),
+                 "FMVSS 126 slowly increasing steer: lateral acceleration (m/s^2) over the steering input", "steer_in",
+                 {"ay_mps2"}});
+    plot(md, {telemetryFile(s, "fmvss126_largest_left"), png(s, "fmvss126_largest"),
+                 "FMVSS 126 sine with dwell, the largest amplitude: steering input and yaw rate (rad/s)", "time_s",
+                 {"steer_in", "yawrate_radps"}});
+  }
   for (int i = 0; i < n; ++i)
     for (int side = 0; side < 2; ++side) {
       const scenario::SineWithDwellMetrics& m = side == 0 ? left[i] : right[i];
@@ -196,6 +222,10 @@ void iso4138(std::ostream& md, const Setup& s) {
   md << "## ISO 4138 constant steering-wheel angle, 20-60 km/h\n\nCalibrated: " << m.steer
      << " deg of steering wheel for a " << (c.response > 0 ? 1 / c.response : 0.0) << " m circle at 20 km/h ("
      << c.tries.size() << " runs).\n\n```\n" << scenario::describe(m) << "```\n\n";
+  if (!s.outDir.empty())
+    plot(md, {telemetryFile(s, "iso4138_constant_steer"), png(s, "iso4138_constant_steer"),
+                 "ISO 4138 constant steering-wheel angle: lateral acceleration (m/s^2) and yaw rate (rad/s) over time",
+                 "time_s", {"ay_mps2", "yawrate_radps"}});
   if (m.valid && m.understeerGradient != 0) {
     const double K = m.understeerGradient * M_PI / 180 / kG;  // rad per m/s^2
     const double v = std::sqrt(r.history.wheelbase / std::abs(K));
@@ -214,8 +244,17 @@ void iso3888(std::ostream& md, const Setup& s) {
   md << "## ISO 3888-2 obstacle avoidance\n\nThe preview driver (docs/STANDARD_TESTS.md), throttle released at "
         "the entry gate, entry speed searched from 30 to 100 km/h to 0.5 km/h (" << r.trials.size() << " runs): "
      << r.describe() << ".\n\n";
-  if (!s.outDir.empty() && r.anyPass)
-    scenario::courseTrial(spec, r.highestPass, telemetryFile(s, "iso3888_2_highest_pass"));
+  if (!s.outDir.empty() && r.anyPass) {
+    const std::string csv = telemetryFile(s, "iso3888_2_highest_pass");
+    scenario::courseTrial(spec, r.highestPass, csv);
+    const scenario::ScenarioSpec at = scenario::courseScenarioAt(spec, r.highestPass);
+    const std::string dir = (std::filesystem::path(s.outDir) / "iso3888_2_highest_pass").string();
+    std::filesystem::create_directories(dir);
+    const std::string why = plotDrive(csv, dir, scenario::Simulation(at).course(), "ISO 3888-2 at the highest passing speed");
+    md << (why.empty() ? "Plots: iso3888_2_highest_pass/path.png (the path with the lanes and cones), "
+                         "iso3888_2_highest_pass/lateral_acceleration.png.\n\n"
+                       : "(no plots: " + why + ")\n\n");
+  }
 }
 
 int runStandard(const std::string& vehicleFile, const std::string& out, int jobs) {
