@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "scenario/course_line.h"
+#include "scenario/driver_identification.h"
 #include "scenario/limit_search.h"
 #include "scenario/preview_driver.h"
 #include "scenario/run.h"
@@ -188,4 +189,32 @@ TEST(PreviewDriver, PassesTheIsoDoubleLaneChangeWithTheReferenceSedan) {
       EXPECT_FALSE(p.ok && p.course->passed && p.course->exitTime >= 0) << "pure pursuit passes too: a weaker test";
     }
   }
+}
+
+// The preview driver's model fitted to the car (driver_identification.h):
+// the reference sedan at 60 km/h. The fitted single-track model's steady
+// lateral acceleration per unit of steering is the car's own, measured in
+// another run (a steering step of another size, held to steady state), to
+// 3 %; the model from the tyres alone misses it by far more (the sedan's
+// roll and compliance steer, its load transfer).
+TEST(PreviewDriver, ItsModelFittedToTheCarHasTheCarsSteadyGain) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(test::asset("scenarios/iso_lane_change.toml"));
+  spec.initialSpeed = spec.speedControl.profile.target = 60 / 3.6;
+  const auto world = scenario::buildWorld(spec);
+  const vehicle::SingleTrack prior = vehicle::singleTrack(world->vehicle);
+  const scenario::Identification id = scenario::identifySingleTrack(spec, world->scene, prior);
+  ASSERT_TRUE(id.fitted) << id.why;
+  // The car's own gain: a step of 0.03 (the fit's was about 2 m/s^2 by the prior), 4 s at 60 km/h.
+  scenario::ScenarioSpec step = scenario::loadScenarioFile(test::asset("scenarios/standard/iso7401_step_steer_80.toml"));
+  step.initialSpeed = step.speedControl.profile.target = 60 / 3.6;
+  step.steering.level = 0.03;
+  scenario::Simulation sim(step);
+  const scenario::RunResult r = scenario::runScenario(sim, {});
+  ASSERT_TRUE(r.ok) << r.failure;
+  const double measured = r.samples.back().ay / 0.03;
+  const double u = 60 / 3.6;
+  const double fitted = id.car.steadyLateralGain(u) * id.car.roadWheelPerSteer;
+  const double tyresAlone = prior.steadyLateralGain(u) * prior.roadWheelPerSteer;
+  EXPECT_NEAR(fitted, measured, 0.03 * measured);
+  EXPECT_GT(std::abs(tyresAlone - measured), 0.1 * measured);
 }

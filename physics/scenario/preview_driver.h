@@ -36,7 +36,7 @@ namespace bdfcar::scenario {
 using PathOffset = std::function<double(double x, double y)>;
 
 struct PreviewDriverParams {
-  double previewTime = 1.5;   // s, the window
+  double previewTime = 1.0;   // s, the window
   int previewPoints = 15;     // spread evenly over it
   int commandMoves = 6;       // the commands over the window: held over equal parts of it
   // Weight of the squared change of road-wheel angle between parts (m^2 per

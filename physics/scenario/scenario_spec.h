@@ -68,7 +68,7 @@ struct PathFollowerSpec {
   // follows the path through a course computed for the car's footprint
   // (course_line.h), grown by lineMargin on every side.
   enum class Law { PurePursuit, Preview } law = Law::PurePursuit;
-  double previewTime = 1.5;    // s
+  double previewTime = 1.0;    // s
   double lineMargin = 0.15;    // m
   std::vector<Eigen::Vector2d> points;
   bool closed = false;

@@ -8,6 +8,7 @@
 
 #include "multibody/kinematics.h"
 #include "scenario/course_line.h"
+#include "scenario/driver_identification.h"
 #include "vehicle/derivation_cache.h"
 #include "vehicle/motion_ratio.h"
 #include "portable_math.h"
@@ -137,6 +138,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     if (f.law == PathFollowerSpec::Law::Preview) {
       PreviewDriverParams pp = previewDriverParams(veh, startFriction(), spec.tick);
       pp.previewTime = f.previewTime;
+      pp.car = identifySingleTrack(spec, world_->scene, pp.car).car;  // the car as it answers
       preview_.emplace(pp, pathOffset(veh));
     }
     else
