@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "cli_errors.h"
+#include "progress_bar.h"
 #include "commands.h"
 #include "report/studies.h"
 #include "scenario/calibration.h"
@@ -169,6 +170,7 @@ void fmvss126(std::ostream& md, const Setup& s) {
   const int n = static_cast<int>(amplitudes.size());
   std::vector<scenario::SineWithDwellMetrics> left(n), right(n);
   progress("FMVSS 126: the sine-with-dwell series");
+  ProgressBar bar(static_cast<std::size_t>(2 * n), "runs");
   parallelFor(2 * n, s.jobs, [&](int k) {
     const int i = k / 2;
     const double sign = k % 2 == 0 ? 1.0 : -1.0;
@@ -177,6 +179,7 @@ void fmvss126(std::ostream& md, const Setup& s) {
     // The largest amplitude's runs kept (the series' hardest).
     const std::string keep = i + 1 == n ? telemetryFile(s, sign > 0 ? "fmvss126_largest_left" : "fmvss126_largest_right") : "";
     (sign > 0 ? left : right)[i] = scenario::fmvss126SineWithDwell(run(t, keep).history);
+    bar.step();
   });
   if (!s.outDir.empty()) {
     plot(md, {telemetryFile(s, "fmvss126_sis"), png(s, "fmvss126_sis"),

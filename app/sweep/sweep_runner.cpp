@@ -7,10 +7,11 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
-#include <mutex>
+#include <optional>
 #include <thread>
 
 #include "interrupt.h"
+#include "progress_bar.h"
 
 extern char** environ;
 
@@ -32,26 +33,19 @@ int runShell(const std::string& line) {
 }  // namespace
 
 void runCommandLines(const std::vector<std::string>& lines, int jobs, bool progress) {
-  std::atomic<std::size_t> next{0}, done{0};
-  std::mutex print;
-  const bool tty = isatty(STDERR_FILENO);
+  std::atomic<std::size_t> next{0};
+  std::optional<ProgressBar> bar;
+  if (progress) bar.emplace(lines.size(), "cases");
   auto worker = [&] {
     for (std::size_t i; (i = next++) < lines.size();) {
       if (interruptRequested()) return;
       runShell(lines[i]);
-      const std::size_t n = ++done;
-      if (!progress) continue;
-      std::lock_guard lock(print);
-      const int width = 30, filled = static_cast<int>(width * n / lines.size());
-      std::fprintf(stderr, "%s[%.*s%*s] %zu/%zu cases%s", tty ? "\r" : "", filled,
-                   "##############################", width - filled, "", n, lines.size(), tty ? "" : "\n");
-      std::fflush(stderr);
+      if (bar) bar->step();
     }
   };
   std::vector<std::thread> threads;
   for (int k = 0; k < jobs; ++k) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
-  if (tty && progress) std::fprintf(stderr, "\n");
 }
 
 }  // namespace bdfcar::app
