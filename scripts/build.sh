@@ -18,6 +18,14 @@ if [ -z "${BDFCAR_BUILD_DIR:-}" ] && grep -q '^BDFCAR_PYTHON_INSTALL_DIR:' "$bui
   if [ -w "$parent" ]; then
     cmake --install "$build" --component python >/dev/null
     echo "build: the bdfcar Python module is installed in $site"
+    # A python3 ahead of Debian's on the PATH (pyenv, a virtual environment)
+    # does not look there: say which interpreter has it.
+    built=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$build/CMakeCache.txt")
+    onPath=$(command -v python3 || true)
+    if [ -n "$built" ] && [ -n "$onPath" ] && [ "$(readlink -f "$onPath")" != "$(readlink -f "$built")" ] &&
+       ! "$onPath" -c "import sys; sys.exit(0 if sys.prefix == '/usr' else 1)" 2>/dev/null; then
+      echo "build: python3 on the PATH is $onPath, not $built the module is built for: run $built -c 'import bdfcar'"
+    fi
   else
     echo "build: $site is not writable: use PYTHONPATH=$build/python (or run as root)"
   fi
