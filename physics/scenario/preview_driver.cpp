@@ -84,9 +84,10 @@ double PreviewDriver::steer(const PreviewCarState& s) const {
   std::array<double, kMaxPoints> e{}, e1{};
   std::array<double, kMaxMoves> c;
   c.fill(std::clamp(s.steer, -1.0, 1.0));
-  Eigen::MatrixXd J(n, M);
-  Eigen::MatrixXd H(M, M);
-  Eigen::VectorXd g(M);
+  // Bounded sizes: no heap allocation in a tick.
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxPoints, kMaxMoves> J(n, M);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMoves, kMaxMoves> H(M, M);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxMoves, 1> g(M), dc(M);
   for (int it = 0; it < kIterations; ++it) {
     predict(s, c.data(), e.data());
     for (int j = 0; j < M; ++j) {
@@ -97,8 +98,7 @@ double PreviewDriver::steer(const PreviewCarState& s) const {
       for (int i = 0; i < n; ++i) J(i, j) = (e1[i] - e[i]) / step;
     }
     H.noalias() = J.transpose() * J;
-    for (int i = 0; i < n; ++i) e1[i] = e[i];
-    g.noalias() = J.transpose() * Eigen::Map<const Eigen::VectorXd>(e1.data(), n);
+    g.noalias() = J.transpose() * Eigen::Map<const Eigen::VectorXd>(e.data(), n);
     // The change penalty: D c with D the first differences from the rack's steer.
     for (int j = 0; j < M; ++j) {
       const double before = j == 0 ? std::clamp(s.steer, -1.0, 1.0) : c[j - 1];
@@ -112,7 +112,7 @@ double PreviewDriver::steer(const PreviewCarState& s) const {
         g(j - 1) -= w * d;
       }
     }
-    const Eigen::VectorXd dc = H.ldlt().solve(-g);
+    dc = H.ldlt().solve(-g);
     if (!dc.allFinite()) break;
     for (int j = 0; j < M; ++j) c[j] = std::clamp(c[j] + dc(j), -1.0, 1.0);
   }

@@ -140,9 +140,9 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       pp.previewTime = f.previewTime;
       pp.car = identifySingleTrack(spec, world_->scene, pp.car).car;  // the car as it answers
       preview_.emplace(pp, pathOffset(veh));
-    }
-    else
+    } else {
       follower_.emplace(p, target, state_.follower);
+    }
   }
 }
 
