@@ -23,6 +23,7 @@
 #include "report/studies.h"
 #include "scenario/calibration.h"
 #include "scenario/limit_search.h"
+#include "scenario/parallel_runs.h"
 #include "scenario/row_file.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
@@ -59,26 +60,6 @@ Ran run(const scenario::ScenarioSpec& spec, const std::string& telemetry = "") {
   if (!r.result.ok) throw std::runtime_error(spec.name + ": the run failed: " + r.result.failure);
   r.history = scenario::timeHistory(r.result, sim.vehicle());
   return r;
-}
-
-// f(i) for i in [0, n), `jobs` at a time; the first exception rethrown.
-template <class F>
-void parallelFor(int n, int jobs, F f) {
-  std::vector<std::exception_ptr> errors(static_cast<size_t>(n));
-  for (int begin = 0; begin < n; begin += jobs) {
-    std::vector<std::thread> threads;
-    for (int i = begin; i < std::min(n, begin + jobs); ++i)
-      threads.emplace_back([&, i] {
-        try {
-          f(i);
-        } catch (...) {
-          errors[static_cast<size_t>(i)] = std::current_exception();
-        }
-      });
-    for (std::thread& t : threads) t.join();
-  }
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
 }
 
 std::string telemetryFile(const Setup& s, const std::string& name) {
@@ -171,7 +152,7 @@ void fmvss126(std::ostream& md, const Setup& s) {
   std::vector<scenario::SineWithDwellMetrics> left(n), right(n);
   progress("FMVSS 126: the sine-with-dwell series");
   ProgressBar bar(static_cast<std::size_t>(2 * n), "runs");
-  parallelFor(2 * n, s.jobs, [&](int k) {
+  scenario::runInParallel(2 * n, s.jobs, [&](int k) {
     const int i = k / 2;
     const double sign = k % 2 == 0 ? 1.0 : -1.0;
     scenario::ScenarioSpec t = base;

@@ -3,36 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <stdexcept>
-#include <thread>
 
+#include "scenario/parallel_runs.h"
 #include "scenario/run.h"
 
 namespace bdfcar::scenario {
 
 namespace {
 
-// The trials at these speeds, `jobs` at a time; the first exception rethrown after.
+// The trials at these speeds, `jobs` at a time.
 std::vector<LimitTrial> runRound(const std::vector<double>& speeds, int jobs, const LimitTrialFunction& trial) {
   std::vector<LimitTrial> out(speeds.size());
-  std::vector<std::exception_ptr> errors(speeds.size());
-  for (size_t begin = 0; begin < speeds.size(); begin += static_cast<size_t>(jobs)) {
-    const size_t end = std::min(speeds.size(), begin + static_cast<size_t>(jobs));
-    std::vector<std::thread> threads;
-    for (size_t i = begin; i < end; ++i)
-      threads.emplace_back([&, i] {
-        try {
-          out[i] = trial(speeds[i]);
-          out[i].speed = speeds[i];
-        } catch (...) {
-          errors[i] = std::current_exception();
-        }
-      });
-    for (std::thread& t : threads) t.join();
-  }
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  runInParallel(static_cast<int>(speeds.size()), jobs, [&](int i) {
+    out[i] = trial(speeds[i]);
+    out[i].speed = speeds[i];
+  });
   return out;
 }
 
