@@ -121,7 +121,7 @@ void CarCore::telemetryRow(double* out) {
   const vehicle::VehicleSample s = sim_->sample();
   const scenario::DriverInput in = sim_->lastInput();
   scenario::TelemetryInputs ti{sim_->steerAt(s.t), in.throttle, in.brake, last_.iterations, last_.correction, 0,
-                               fidelity(), sim_->takeSwitchJump(), sim_->powertrainChannels()};
+                               fidelity(), sim_->takeSwitchJump(), sim_->powertrainChannels(), {}};
   scenario::TelemetryRowMaker::Values values;
   rowMaker_.fill(s, ti, values);
   std::copy(values.begin(), values.begin() + rowMaker_.columns(), out);

@@ -57,6 +57,7 @@ void addRenderDelegateCommand(CLI::App& app, CommandList& commands) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scenario to PNG frames (and a video) without a display");
   cmd->allow_extras();
   cmd->prefix_command();
+  cmd->set_help_flag();  // --help too goes to bdfcar-headless, which has the options to list
   commands.push_back({cmd, [] {
                         const std::string why = execHeadless();
                         std::fprintf(stderr, "error: %s\n", why.c_str());

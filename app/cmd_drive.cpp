@@ -29,9 +29,9 @@ std::string defaultRecordDir() {
 
 struct DriveArgs {
   std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive_powertrain.toml";
-  std::string record, replay, telemetry, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
+  std::string record, replay, telemetry, laps, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
   double seconds = 0;
-  bool batch = false, noVsync = false, replayAnyway = false, scenarioGiven = false;
+  bool batch = false, noVsync = false, noSound = false, replayAnyway = false, scenarioGiven = false;
   ScenarioOverrides overrides;
 };
 
@@ -51,8 +51,10 @@ int runDrive(const DriveArgs& a) {
     if (!why.empty())
       throw std::runtime_error(a.replay + ": " + why + ": the replay would not reproduce the drive (--replay-anyway replays it all the same)");
   }
-  scenario::refuseSameOutputs({{"--telemetry", a.telemetry}, {"--record", a.record}});
-  for (const std::string& out : {a.telemetry, a.record})
+  if (!a.laps.empty() && !spec.laps.enabled)
+    throw std::runtime_error("--laps " + a.laps + ": " + scenarioFile + " times no laps (it has no [laps] table)");
+  scenario::refuseSameOutputs({{"--telemetry", a.telemetry}, {"--record", a.record}, {"--laps", a.laps}});
+  for (const std::string& out : {a.telemetry, a.record, a.laps})
     scenario::refuseOverwritingInputs(out, {scenarioFile, spec.vehicleFile, spec.terrainFile, a.replay});
   InterruptGuard interrupts;
   SessionOptions so;
@@ -74,6 +76,7 @@ int runDrive(const DriveArgs& a) {
     io.recordDir = a.recordDir;
     io.seconds = a.seconds;
     io.vsync = !a.noVsync;
+    io.sound = !a.noSound;
     io.screenshot = a.screenshot;
     if (!parseSize(a.size, io.width, io.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT");
     const LoopStats stats = runInteractive(session, io);
@@ -84,6 +87,10 @@ int runDrive(const DriveArgs& a) {
       std::printf("course: %s, course time %.2f s\n", scenario::courseVerdict(*c).c_str(), c->exitTime - c->entryTime);
     else
       std::printf("course: %s\n", scenario::courseVerdict(*c).c_str());
+  }
+  if (const scenario::LapTimer* l = session.laps()) {
+    std::printf("%s", l->laps().empty() ? "laps: none completed\n" : scenario::lapsSummary(l->laps()).c_str());
+    if (!a.laps.empty()) scenario::writeLapFile(a.laps, l->laps(), l->sectors());
   }
   if (session.resets() > 0)
     std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
@@ -118,9 +125,13 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
                 "Replay a recording made with another scenario, vehicle or tick (it will not reproduce the drive)");
   cmd->add_option("--record-dir", a->recordDir, "Folder of the recordings F9 starts (default: " + defaultRecordDir() + ")");
   cmd->add_option("--telemetry", a->telemetry, "Write telemetry CSV while driving");
+  cmd->add_option("--laps", a->laps,
+                  "A scenario that times laps ([laps]; the default one does): write the laps here at the end, one CSV "
+                  "row each (docs/SCENARIOS.md)");
   cmd->add_option("--seconds", a->seconds, "Stop after this much wall time")->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--size", a->size, "Window size, e.g. 1280x720");
   cmd->add_flag("--no-vsync", a->noVsync, "Do not wait for the display's refresh");
+  cmd->add_flag("--no-sound", a->noSound, "No engine, tyre or wind sound (default: played on the default sound device)");
   cmd->add_option("--screenshot", a->screenshot, "Save the last frame as PNG");
   cmd->add_option("--mappings", a->mappings, "Folder of input mapping files (*.toml; default: the shipped ones)")
       ->check(CLI::ExistingDirectory);

@@ -138,7 +138,12 @@ int runInfo(const std::string& path, const std::string& fidelity, const std::vec
     return runTerrainInfo(path);
   }
   std::vector<config::Setting> settings;
-  for (const std::string& x : set) settings.push_back(config::parseSetting(x));
+  // Keys as `run --set` writes a vehicle's (vehicle.springs[0].damping) or
+  // as the vehicle file does (springs[0].damping): this command has only the vehicle.
+  for (const std::string& x : set) {
+    const config::Setting s = config::parseSetting(x);
+    settings.push_back(config::underPrefix(s, "vehicle.").value_or(s));
+  }
   const vehicle::Vehicle v = vehicle::buildVehicle(vehicle::loadVehicleFile(path, settings));
   const mb::Model& m = v.model;
   std::printf("%s (%s)\n", v.spec.name.c_str(), path.c_str());
@@ -214,7 +219,8 @@ void addInfoCommand(CLI::App& app, CommandList& commands) {
       ->check(CLI::IsMember(rungNameList()));
   auto set = std::make_shared<std::vector<std::string>>();
   addSetOption(*cmd, *set,
-               "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000; docs/VEHICLES.md), checked "
+               "KEY=VALUE: set a key of the vehicle file (springs[0].stiffness=300000, or as run --set writes it: "
+               "vehicle.springs[0].stiffness=300000; docs/VEHICLES.md), checked "
                "as in the file: the sheet of a variant without editing the file. Repeatable");
   commands.push_back({cmd, [path, fidelity, set] { return reportErrors([&] { return runInfo(*path, *fidelity, *set); }); }});
 }

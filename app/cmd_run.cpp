@@ -38,12 +38,15 @@ void reportMetrics(const scenario::ScenarioSpec& spec, const scenario::Simulatio
   f.close();
 }
 
-int runRun(const std::string& path, const std::string& out, const std::string& metrics, const ScenarioOverrides& ov) {
+int runRun(const std::string& path, const std::string& out, const std::string& metrics, const std::string& laps,
+           const ScenarioOverrides& ov) {
   scenario::ScenarioSpec spec = loadScenario(path, ov);
+  if (!laps.empty() && !spec.laps.enabled)
+    throw std::runtime_error("--laps " + laps + ": " + path + " times no laps (it has no [laps] table)");
   auto refuseDestroyingOutputs = [&] {
-    scenario::refuseSameOutputs({{"--out", out}, {"--metrics", metrics}});
-    scenario::refuseOverwritingInputs(out, {path, spec.vehicleFile, spec.terrainFile});
-    scenario::refuseOverwritingInputs(metrics, {path, spec.vehicleFile, spec.terrainFile});
+    scenario::refuseSameOutputs({{"--out", out}, {"--metrics", metrics}, {"--laps", laps}});
+    for (const std::string& o : {out, metrics, laps})
+      scenario::refuseOverwritingInputs(o, {path, spec.vehicleFile, spec.terrainFile});
   };
   refuseDestroyingOutputs();  // before the vehicle and terrain are read (an output over them)
   scenario::Simulation sim(spec);
@@ -56,7 +59,7 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   opt.stopRequested = &interruptRequested();
   // Without a telemetry file (and no course to judge) nothing is sampled:
   // the printed time per step is then the step alone.
-  opt.sample = !out.empty() || sim.course().has_value() || opt.keepSamples;
+  opt.sample = !out.empty() || sim.course().has_value() || opt.keepSamples || spec.laps.enabled;
   const scenario::RunResult r = scenario::runScenario(sim, opt);
   if (!r.interruptedWhileSettling.empty()) {
     std::fprintf(stderr, "%s: stopped by %s before the run began (%s)%s\n", spec.name.c_str(), interruptSignalName(),
@@ -88,6 +91,10 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   }
   if ((spec.standardTest != scenario::StandardTest::None || !metrics.empty()) && !r.interrupted)
     reportMetrics(spec, sim, r, metrics);
+  if (spec.laps.enabled) {
+    std::printf("%s", r.laps.empty() ? "laps: none completed\n" : scenario::lapsSummary(r.laps).c_str());
+    if (!laps.empty()) scenario::writeLapFile(laps, r.laps, spec.laps.sectors);
+  }
   if (r.course) {
     const auto& cr = *r.course;
     std::printf("ISO 3888-%d course: %s, peak lateral acceleration %.2f m/s^2 (%.2f g)\n", sim.course()->part,
@@ -115,8 +122,10 @@ void addRunCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--metrics", *metrics,
                   "Write the run's metrics here (docs/STANDARD_TESTS.md): peaks, final speed, the course's verdict, "
                   "and a standard test's metrics ([metrics] test); CSV when the name ends in .csv, else JSON");
+  auto laps = std::make_shared<std::string>();
+  cmd->add_option("--laps", *laps, "A scenario that times laps ([laps]): write its laps here, one CSV row each");
   addOverrideOptions(*cmd, *ov);
-  commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *metrics, *ov); }); }});
+  commands.push_back({cmd, [=] { return reportErrors([&] { return runRun(*path, *out, *metrics, *laps, *ov); }); }});
 }
 
 }  // namespace bdfcar::app

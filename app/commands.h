@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace bdfcar::app {
@@ -14,9 +15,12 @@ struct Command {
 };
 using CommandList = std::vector<Command>;
 
-void addVersionCommand(CLI::App& app, CommandList& commands);
+// `bdfcar version`: bdfcar's and its libraries' versions; displayLibraries
+// are the window's and renderer's lines (SDL2, OpenSceneGraph), which only
+// the executables with graphics link.
+void addVersionCommand(CLI::App& app, CommandList& commands, std::vector<std::string> displayLibraries = {});
 // What `bdfcar version` and `bdfcar --version` print; returns 0.
-int printVersion();
+int printVersion(const std::vector<std::string>& displayLibraries = {});
 void addInfoCommand(CLI::App& app, CommandList& commands);
 void addKcCommand(CLI::App& app, CommandList& commands);
 void addTyreCommand(CLI::App& app, CommandList& commands);

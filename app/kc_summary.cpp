@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "config/units.h"
+#include "vehicle/vehicle_sheet.h"
 
 namespace bdfcar::app {
 
@@ -70,8 +71,8 @@ std::string kcSummary(const vehicle::Vehicle& v, const std::string& path, const 
   out += format("\n  anti-dive (front, braking, %.0f %% of the brake torque front): %.1f %%\n", 100 * r.brakeFront,
               r.antiDive);
   out += format("  anti-squat (rear, driving): %.1f %%\n", r.antiSquat);
-  out += format("  steering ratio %.2f:1 (wheels at design height); Ackermann %.0f %% at 10 deg inner road-wheel angle\n",
-              r.steeringRatio, r.ackermann);
+  out += format("  steering ratio %.2f:1 (wheels at design height); %s\n", r.steeringRatio,
+              vehicle::ackermannText(r.ackermann).c_str());
   return out;
 }
 

@@ -5,6 +5,9 @@
 #include "cli_errors.h"
 #include "commands.h"
 #include "process.h"
+#ifdef BDFCAR_WITH_GRAPHICS
+#include "render/library_versions.h"
+#endif
 
 int main(int argc, char** argv) {
   using namespace bdfcar::app;
@@ -13,7 +16,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.fallthrough(false);
   CommandList commands;
-  addVersionCommand(app, commands);
+#ifdef BDFCAR_WITH_GRAPHICS
+  const std::vector<std::string> displayLibraries{bdfcar::render::sdlVersion(), bdfcar::render::osgVersion()};
+#else
+  const std::vector<std::string> displayLibraries;
+#endif
+  addVersionCommand(app, commands, displayLibraries);
   addInfoCommand(app, commands);
   addKcCommand(app, commands);
   addTyreCommand(app, commands);
@@ -40,7 +48,7 @@ int main(int argc, char** argv) {
   }
   for (const Command& c : commands)
     if (c.cli->parsed()) return c.run();
-  if (version) return printVersion();
+  if (version) return printVersion(displayLibraries);
   std::fprintf(stderr, "%s\nerror: name a command (see above)\n", app.help().c_str());
   return kExitUsage;
 }

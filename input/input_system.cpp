@@ -84,9 +84,11 @@ void disconnect(State& s, SDL_JoystickID id) {
   s.devices.erase(s.devices.begin() + (d - s.devices.data()));
 }
 
-// Marks the actions bound to `code` in `mapping` as fired this tick.
-void fireActions(const DeviceMapping& mapping, int code, Controls& c) {
+// Marks the actions bound to `code` in `mapping` as fired this tick; with
+// onlyRepeating, those a held key repeats (rewind: held, it keeps going back).
+void fireActions(const DeviceMapping& mapping, int code, Controls& c, bool onlyRepeating = false) {
   for (int a = 0; a < kActionCount; ++a) {
+    if (onlyRepeating && static_cast<Action>(a) != Action::Rewind) continue;
     const std::vector<int>& codes = mapping.actions[a];
     if (std::find(codes.begin(), codes.end(), code) != codes.end()) actionFlag(c, static_cast<Action>(a)) = true;
   }
@@ -114,7 +116,7 @@ void handleKeyEvent(State& s, const SDL_KeyboardEvent& k, Controls& c) {
   const int code = k.keysym.scancode;
   if (code <= 0 || code >= SDL_NUM_SCANCODES) return;
   s.keyHeld[code] = k.type == SDL_KEYDOWN;
-  if (k.type == SDL_KEYDOWN && k.repeat == 0) fireActions(s.keyboard, code, c);
+  if (k.type == SDL_KEYDOWN) fireActions(s.keyboard, code, c, k.repeat != 0);
 }
 
 // Takes this tick's keyboard and device events from SDL's queue, in order.

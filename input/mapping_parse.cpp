@@ -135,9 +135,18 @@ void readForceFeedback(Table& root, DeviceMapping& m) {
 void readSpeedSensitiveSteering(Table& root, DeviceMapping& m) {
   std::optional<Table> t = root.optionalTable("speed_sensitive_steering");
   if (!t) return;
-  t->rejectUnknownKeys({"speed", "scale"});
-  // Up to 200 m/s (720 km/h): more is a typo; the scale must leave some steering.
-  m.speedSensitive.speed = t->number("speed", config::Dimension::Speed, Range{0.0, 200.0, true, false});
+  t->rejectUnknownKeys({"speed", "scale", "lateral_acceleration"});
+  // The linear law (speed) or the grip law (lateral_acceleration), one of them.
+  if (t->has("speed") && t->has("lateral_acceleration"))
+    t->fail("give 'speed' (the linear law) or 'lateral_acceleration' (the grip law), not both", "lateral_acceleration");
+  if (!t->has("speed") && !t->has("lateral_acceleration"))
+    t->fail("expected 'speed' (the linear law) or 'lateral_acceleration' (the grip law)");
+  // Up to 200 m/s (720 km/h) and 50 m/s^2 (5 g): more is a typo; the scale must leave some steering.
+  if (t->has("speed"))
+    m.speedSensitive.speed = t->number("speed", config::Dimension::Speed, Range{0.0, 200.0, true, false});
+  else
+    m.speedSensitive.lateralAcceleration =
+        t->number("lateral_acceleration", config::Dimension::Acceleration, Range{0.0, 50.0, true, false});
   m.speedSensitive.scale = t->numberIn("scale", Range{0.0, 1.0, true, false});
 }
 

@@ -80,6 +80,9 @@ std::string mappingToml(const DeviceMapping& m, const std::vector<std::string>& 
   if (m.speedSensitive.speed > 0)
     out += "\n[speed_sensitive_steering]\nspeed = " + number(m.speedSensitive.speed) + "  # m/s\nscale = " +
            number(m.speedSensitive.scale) + "\n";
+  else if (m.speedSensitive.lateralAcceleration > 0)
+    out += "\n[speed_sensitive_steering]\nlateral_acceleration = " + number(m.speedSensitive.lateralAcceleration) +
+           "  # m/s^2\nscale = " + number(m.speedSensitive.scale) + "\n";
   bool anyAction = false;
   for (int i = 0; i < kActionCount; ++i) {
     if (m.actions[i].empty()) continue;

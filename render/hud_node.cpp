@@ -1,5 +1,7 @@
 #include "render/hud_node.h"
 
+#include "scenario/lap_timer.h"
+
 #include <osg/BlendFunc>
 #include <osg/Geode>
 #include <osgText/Font>
@@ -128,7 +130,11 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   fig += format("yaw   %+6.1f%s/s\n", hud.yawRate * 180.0 / M_PI, deg);
   fig += format("%-6s%6.2f x\n", hud.realTimeLabel.c_str(), hud.realTimeFactor);
   fig += format("step  %6.0f us\n", hud.stepTime * 1e6);
-  fig += format("thr %3.0f%%  brk %3.0f%%", 100 * std::clamp(hud.throttle, 0.0, 1.0), 100 * std::clamp(hud.brake, 0.0, 1.0));
+  // A speed hold drives the wheels without the throttle: say what it holds.
+  if (hud.speedHold >= 0)
+    fig += format("hold %3.0f km/h brk %3.0f%%", hud.speedHold * 3.6, 100 * std::clamp(hud.brake, 0.0, 1.0));
+  else
+    fig += format("thr %3.0f%%  brk %3.0f%%", 100 * std::clamp(hud.throttle, 0.0, 1.0), 100 * std::clamp(hud.brake, 0.0, 1.0));
   if (hud.powertrain) {
     const std::string gear = hud.gear < 0 ? "R" : hud.gear == 0 ? "N" : std::to_string(hud.gear);
     fig += format("\ngear %-2s%s %5.0f rpm%s", gear.c_str(), hud.shifting ? ">" : " ", hud.engineRpm,
@@ -150,6 +156,13 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   if (hud.coneHits >= 0) right += format("\ncones hit %d", hud.coneHits);
   if (hud.courseTime >= 0) right += format("\ncourse %6.2f s", hud.courseTime);
   if (!hud.verdict.empty()) right += "\n" + hud.verdict;
+  if (hud.lap == 0) right += "\nout lap";
+  if (hud.lap > 0)
+    right += format("\nlap %d S%d %s%s", hud.lap, hud.sector, scenario::lapClock(hud.lapTime).c_str(),
+                    hud.lapValid ? "" : " cut");
+  if (hud.lapDeltaShown) right += format("\ndelta %+.2f s", hud.lapDelta);
+  if (hud.lastLap >= 0) right += "\nlast " + scenario::lapClock(hud.lastLap);
+  if (hud.bestLap >= 0) right += "\nbest " + scenario::lapClock(hud.bestLap);
   setIfChanged(*course_, right);
   setIfChanged(*message_, hud.message);
 

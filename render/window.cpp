@@ -7,6 +7,7 @@
 
 #include "render/embedded_viewer.h"
 #include "render/gl_check.h"
+#include "render/library_versions.h"
 #include "render/png_writer.h"
 
 namespace bdfcar::render {
@@ -144,5 +145,15 @@ int Window::width() const { return impl_->width; }
 int Window::height() const { return impl_->height; }
 const std::string& Window::glRenderer() const { return impl_->renderer; }
 void Window::setTitle(const std::string& title) { SDL_SetWindowTitle(impl_->window, title.c_str()); }
+
+std::string sdlVersion() {
+  SDL_version compiled, linked;
+  SDL_VERSION(&compiled);
+  SDL_GetVersion(&linked);
+  auto text = [](const SDL_version& v) {
+    return std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.patch);
+  };
+  return "SDL2 " + text(linked) + " (compiled against " + text(compiled) + ")";
+}
 
 }  // namespace bdfcar::render

@@ -270,3 +270,58 @@ TEST(DriveSession, TheHudShowsTheCourseFromItsEntry) {
   EXPECT_EQ(h.courseTime, c->exitTime - c->entryTime);
   EXPECT_EQ(h.verdict, "PASSED");
 }
+
+// Rewind goes back 0.5 s further at each press, up to the start: pressed ten
+// times while driving (three ticks between presses, as a held key repeats)
+// or while paused (no tick between), the drive is 5 s earlier; a press after
+// driving on for a while starts again from the newest snapshot.
+TEST(DriveSession, TenRewindsGoBackFiveSecondsDrivingOrPaused) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  const scenario::DriverInput cruise{0.0, 0.2, 0.0};
+  for (const int ticksBetween : {3, 0}) {
+    SCOPED_TRACE(ticksBetween);
+    app::SessionOptions o;
+    o.rewindable = true;
+    app::DriveSession d(spec, o);
+    const double t0 = d.time();
+    for (int i = 0; i < 1200; ++i) ASSERT_TRUE(d.tick(cruise)) << d.failure();
+    ASSERT_NEAR(d.time() - t0, 12.0, 1e-9);
+    for (int press = 1; press <= 10; ++press) {
+      ASSERT_TRUE(d.rewind());
+      // Snapshots every 0.5 s: the first press lands on the one at 11.5 s.
+      EXPECT_NEAR(d.time() - t0, 12.0 - 0.5 * press, 1e-9) << "press " << press;
+      for (int i = 0; i < ticksBetween; ++i) ASSERT_TRUE(d.tick(cruise)) << d.failure();
+    }
+    // Driven on for 2 s from there: a new press goes back to the newest snapshot.
+    for (int i = 0; i < 200 - ticksBetween; ++i) ASSERT_TRUE(d.tick(cruise)) << d.failure();
+    ASSERT_NEAR(d.time() - t0, 9.0, 1e-9);
+    ASSERT_TRUE(d.rewind());
+    EXPECT_NEAR(d.time() - t0, 8.5, 1e-9);
+    // Held on, it reaches the start and stops there.
+    int presses = 0;
+    while (d.rewind()) ASSERT_LT(++presses, 100);
+    EXPECT_NEAR(d.time() - t0, 0.0, 1e-9);
+    EXPECT_EQ(presses, 17);  // 8.0, 7.5, ... 0.5, then the start
+  }
+}
+
+// The HUD's pedal line under a speed hold: a car without a powertrain shows
+// the speed it holds (the hold drives the wheels, the throttle input is 0);
+// one with a powertrain shows the throttle the hold works.
+TEST(DriveSession, TheHudShowsWhatASpeedHoldDoes) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/jturn.toml"));
+  {
+    app::DriveSession d(spec, {});
+    for (int i = 0; i < 50; ++i) ASSERT_TRUE(d.tick(std::nullopt)) << d.failure();
+    const vehicle::HudInfo h = d.hud(1.0, 0.0, "");
+    EXPECT_NEAR(h.speedHold, 80 / 3.6, 1e-9);
+    EXPECT_EQ(h.throttle, 0.0);
+  }
+  spec.vehicleFile = asset("vehicles/sedan_drive.toml");
+  app::DriveSession d(spec, {});
+  for (int i = 0; i < 50; ++i) ASSERT_TRUE(d.tick(std::nullopt)) << d.failure();
+  const vehicle::HudInfo h = d.hud(1.0, 0.0, "");
+  EXPECT_EQ(h.speedHold, -1.0);
+  EXPECT_GT(h.throttle, 0.02);  // drag and rolling at 80 km/h need some
+  EXPECT_LE(h.throttle, 1.0);
+}

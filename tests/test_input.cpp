@@ -48,6 +48,7 @@ pedal_fall_rate = 10.0
 gear_up = "E"
 reset = "R"
 quit = "Escape"
+rewind = "Backspace"
 )";
 
 const char* const kWheelToml = R"(
@@ -367,6 +368,20 @@ TEST_F(InputDevices, KeyActionsAreEdgeTriggered) {
   EXPECT_FALSE(c.gearUp);
 }
 
+// Rewind is the one action a held key repeats (the key's auto-repeat): held,
+// it keeps going back; the others stay one press, one action.
+TEST_F(InputDevices, AHeldRewindKeyRepeatsAndNoOtherActionDoes) {
+  InputSystem input(options());
+  pushKey(SDL_SCANCODE_BACKSPACE, true);
+  EXPECT_TRUE(input.poll(kDt).rewind);
+  EXPECT_FALSE(input.poll(kDt).rewind);  // held, no repeat yet
+  pushKey(SDL_SCANCODE_BACKSPACE, true, /*repeat=*/true);
+  pushKey(SDL_SCANCODE_R, true, /*repeat=*/true);
+  const Controls c = input.poll(kDt);
+  EXPECT_TRUE(c.rewind);
+  EXPECT_FALSE(c.reset);
+}
+
 TEST_F(InputDevices, ForceFeedbackIsSilentlyOffWithoutHaptics) {
   ASSERT_GE(attachWheel().id, 0);  // virtual devices have no haptic motor
   InputSystem input(options());
@@ -452,6 +467,12 @@ TEST(InputMapping, BadFilesNameFileLineKeyAndExpectation) {
       {"speed_unknown.toml",
        "[device]\ntype = \"joystick\"\n[speed_sensitive_steering]\nspeed = 20\nscale = 0.5\nmin_scale = 0.2\n", 6,
        "speed_sensitive_steering.min_scale", "one of: speed, scale"},
+      {"speed_two_laws.toml",
+       "[device]\ntype = \"keyboard\"\n[speed_sensitive_steering]\nspeed = 20\nscale = 0.5\nlateral_acceleration = 8\n", 6,
+       "speed_sensitive_steering.lateral_acceleration", "not both"},
+      {"grip_negative.toml",
+       "[device]\ntype = \"keyboard\"\n[speed_sensitive_steering]\nlateral_acceleration = \"-1 m/s^2\"\nscale = 0.5\n", 4,
+       "speed_sensitive_steering.lateral_acceleration", "(0, 50]"},
   };
   for (const BadFile& bad : cases) {
     SCOPED_TRACE(bad.name);
@@ -591,12 +612,12 @@ TEST(DriverControls, AWheelsRotationSteersTheCarsWheelByItsOwnAngle) {
   c.source = DeviceKind::Wheel;
   c.steering = 0.2;
   c.steeringWheelAngle = 0.2 * 450 * deg;
-  EXPECT_NEAR(toDriverInput(c, full, 0.0).steer, 90.0 / 210.0, 1e-12);
+  EXPECT_NEAR(toDriverInput(c, {full}, 0.0).steer, 90.0 / 210.0, 1e-12);
   c.steering = -0.8;
   c.steeringWheelAngle = -0.8 * 450 * deg;
-  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -1.0);  // 360 degrees: past the car's lock
+  EXPECT_EQ(toDriverInput(c, {full}, 0.0).steer, -1.0);  // 360 degrees: past the car's lock
   c.steeringWheelAngle = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(toDriverInput(c, full, 0.0).steer, -0.8);
+  EXPECT_EQ(toDriverInput(c, {full}, 0.0).steer, -0.8);
 }
 
 // A clutch pedal is a device's clutch axis; the keyboard's clutch key is not
@@ -608,14 +629,14 @@ TEST(DriverControls, PedalsGearsAndHandbrakeReachTheSimulation) {
   c.clutch = 1.0;
   c.handbrake = 0.7;
   c.gearUp = c.gearDown = true;
-  bdfcar::scenario::DriverInput in = toDriverInput(c, 1.0, 0.0);
+  bdfcar::scenario::DriverInput in = toDriverInput(c, {1.0}, 0.0);
   EXPECT_FALSE(in.clutchPedal);
   EXPECT_EQ(in.clutch, 1.0);
   EXPECT_EQ(in.handbrake, 0.7);
   EXPECT_EQ(in.shift, 1);
   c.source = DeviceKind::Wheel;
   c.gearUp = false;
-  in = toDriverInput(c, 1.0, 0.0);
+  in = toDriverInput(c, {1.0}, 0.0);
   EXPECT_TRUE(in.clutchPedal);
   EXPECT_EQ(in.shift, -1);
 }

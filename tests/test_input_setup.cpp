@@ -366,15 +366,15 @@ TEST(SpeedSensitiveSteering, FollowsTheStatedLineAndIsOffByDefault) {
   Controls c;
   c.steering = 0.5;
   c.speedSensitive = keyboard.speedSensitive;
-  EXPECT_EQ(toDriverInput(c, 1.0, 0.0).steer, 0.5);
-  EXPECT_NEAR(toDriverInput(c, 1.0, 5.0).steer, 0.425, kTol);   // 0.5 * (1 - 0.6 * 0.25)
-  EXPECT_NEAR(toDriverInput(c, 1.0, 10.0).steer, 0.35, kTol);   // 0.5 * (1 - 0.6 * 0.5)
-  EXPECT_NEAR(toDriverInput(c, 1.0, -10.0).steer, 0.35, kTol);  // reversing
-  EXPECT_NEAR(toDriverInput(c, 1.0, 20.0).steer, 0.2, kTol);
-  EXPECT_NEAR(toDriverInput(c, 1.0, 45.0).steer, 0.2, kTol);    // held above the speed
+  EXPECT_EQ(toDriverInput(c, {1.0}, 0.0).steer, 0.5);
+  EXPECT_NEAR(toDriverInput(c, {1.0}, 5.0).steer, 0.425, kTol);   // 0.5 * (1 - 0.6 * 0.25)
+  EXPECT_NEAR(toDriverInput(c, {1.0}, 10.0).steer, 0.35, kTol);   // 0.5 * (1 - 0.6 * 0.5)
+  EXPECT_NEAR(toDriverInput(c, {1.0}, -10.0).steer, 0.35, kTol);  // reversing
+  EXPECT_NEAR(toDriverInput(c, {1.0}, 20.0).steer, 0.2, kTol);
+  EXPECT_NEAR(toDriverInput(c, {1.0}, 45.0).steer, 0.2, kTol);    // held above the speed
   // A wheel turning the car's wheel by its own angle: 90 of 210 degrees, then x 0.7 at 10 m/s.
   c.steeringWheelAngle = 90.0 * M_PI / 180.0;
-  EXPECT_NEAR(toDriverInput(c, 210.0 * M_PI / 180.0, 10.0).steer, 0.3, kTol);
+  EXPECT_NEAR(toDriverInput(c, {210.0 * M_PI / 180.0}, 10.0).steer, 0.3, kTol);
 
   // Off (no table): the input bit for bit what it was, at any speed.
   const DeviceMapping plain = shippedLikeWheel();
@@ -384,11 +384,41 @@ TEST(SpeedSensitiveSteering, FollowsTheStatedLineAndIsOffByDefault) {
   for (double steer : {-1.0, -0.123456789, 0.0, 0.3, 0.987654321}) {
     d.steering = steer;
     for (double v : {0.0, 3.3, 27.8, 80.0}) {
-      EXPECT_EQ(toDriverInput(d, 1.0, v), toDriverInput(d, 1.0, 0.0));
-      EXPECT_EQ(toDriverInput(d, 1.0, v).steer, steer);
+      EXPECT_EQ(toDriverInput(d, {1.0}, v), toDriverInput(d, {1.0}, 0.0));
+      EXPECT_EQ(toDriverInput(d, {1.0}, v).steer, steer);
     }
   }
-  EXPECT_EQ(speedSensitiveFactor(plain.speedSensitive, 50.0), 1.0);
+  EXPECT_EQ(speedSensitiveFactor(plain.speedSensitive, 50.0, {}), 1.0);
+}
+
+// The grip law: full input asks for the stated lateral acceleration as a
+// kinematic car turns (a = v^2 delta f / L), never more than the whole input
+// (low speed) nor less than the scale; a car with no steering data is left whole.
+TEST(SpeedSensitiveSteering, TheGripLawAsksForTheStatedLateralAcceleration) {
+  const DeviceMapping mapping = parseMapping(
+      std::string(kShippedLikeWheel) + "\n[speed_sensitive_steering]\nlateral_acceleration = \"0.8 g\"\nscale = 0.05\n",
+      "wheel.toml");
+  const double a = 0.8 * 9.80665;
+  EXPECT_NEAR(mapping.speedSensitive.lateralAcceleration, a, 1e-9);
+  EXPECT_EQ(mapping.speedSensitive.speed, 0.0);
+  const CarSteering car{3.66, 0.25, 2.9};  // 210 deg of wheel, 0.25 rad of road wheel
+  Controls c;
+  c.steering = 1.0;
+  c.speedSensitive = mapping.speedSensitive;
+  for (double v : {12.0, 16.7, 27.8, -20.0}) {
+    SCOPED_TRACE(v);
+    const double f = toDriverInput(c, car, v).steer;
+    EXPECT_NEAR(v * v * car.roadWheelFull * f / car.wheelbase, a, 1e-9);
+  }
+  EXPECT_EQ(toDriverInput(c, car, 3.0).steer, 1.0);  // full lock asks for less than a: whole
+  EXPECT_EQ(toDriverInput(c, car, 300.0).steer, 0.05);  // the floor
+  c.steering = -0.5;
+  EXPECT_NEAR(toDriverInput(c, car, 20.0).steer, -0.5 * a * 2.9 / (400.0 * 0.25), 1e-12);
+  EXPECT_EQ(toDriverInput(c, {}, 20.0).steer, -0.5);  // no steering data: untouched
+  // Written back (a device's file, as calibration writes it), read again, the same law.
+  const DeviceMapping again = parseMapping(mappingToml(mapping, {}), "again.toml");
+  EXPECT_EQ(again.speedSensitive.lateralAcceleration, mapping.speedSensitive.lateralAcceleration);
+  EXPECT_EQ(again.speedSensitive.scale, 0.05);
 }
 
 // The test's mapping files and only the test's virtual devices.

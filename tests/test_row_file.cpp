@@ -154,6 +154,27 @@ TEST(RowFile, RowsAnEarlierRunLeftAreKeptAside) {
   EXPECT_FALSE(fs::exists(partial + ".3"));
 }
 
+// An output in folders that do not exist yet gets them (as the frames'
+// --out folder does); a folder that cannot be made is named in the error.
+TEST(RowFile, MissingFoldersOfAnOutputAreMade) {
+  TempDir t;
+  const fs::path out = t.dir / "runs" / "today" / "run.csv";
+  {
+    scenario::RowFile f(out.string());
+    f.append("t,x\n0,1\n");
+    f.close();
+  }
+  EXPECT_EQ(read(out), "t,x\n0,1\n");
+  std::ofstream(t.dir / "plain") << "a file, not a folder";
+  try {
+    scenario::RowFile f((t.dir / "plain" / "run.csv").string());
+    FAIL() << "a folder under a file was made";
+  } catch (const scenario::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot make the folder " + (t.dir / "plain").string()), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(RowFile, AFifoWithoutAReaderIsRefusedAtOnce) {
   TempDir t;
   const std::string fifo = (t.dir / "pipe").string();

@@ -30,7 +30,7 @@ void printFrameStats(const FramesResult& r) {
 }
 
 struct RenderArgs {
-  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry;
+  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry, wav;
   double fps = 30;
   bool noFrames = false;  // video only: the raw frames go to ffmpeg, no PNG
   ScenarioOverrides overrides;
@@ -48,8 +48,11 @@ int runRender(const RenderArgs& a) {
   fo.video = a.video;
   fo.fps = a.fps;
   fo.camera = a.camera;
+  fo.wav = a.wav;
   if (!parseSize(a.size, fo.width, fo.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT, e.g. 1280x720");
-  scenario::refuseOverwritingInputs(a.telemetry, {a.scenario, spec.vehicleFile, spec.terrainFile});
+  scenario::refuseSameOutputs({{"--telemetry", a.telemetry}, {"--wav", a.wav}, {"--video", a.video}});
+  for (const std::string& out : {a.telemetry, a.wav, a.video})
+    scenario::refuseOverwritingInputs(out, {a.scenario, spec.vehicleFile, spec.terrainFile});
   InterruptGuard interrupts;
   SessionOptions so;
   so.telemetryPath = a.telemetry;
@@ -57,6 +60,8 @@ int runRender(const RenderArgs& a) {
   const FramesResult r = renderFrames(session, fo);
   session.closeOutputs();
   printFrameStats(r);
+  if (!fo.wav.empty())
+    std::printf("sound: %s (%.2f s at 48 kHz)\n", fo.wav.c_str(), static_cast<double>(r.soundFrames) / 48000.0);
   if (interruptRequested()) {
     std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
     return interruptExitStatus();
@@ -116,6 +121,9 @@ void addHeadlessCommands(CLI::App& app, CommandList& commands) {
     cmd->add_option("--camera", a->camera, "chase, hood, orbit or top-down")
         ->check(CLI::IsMember({"chase", "hood", "orbit", "top-down"}));
     cmd->add_option("--telemetry", a->telemetry, "Also write the telemetry CSV");
+    cmd->add_option("--wav", a->wav,
+                    "Also write the car's sound (engine, tyres, wind, shifts, bumps; as `drive` plays it) as a WAV "
+                    "file, 48 kHz mono: the soundtrack, tested without a sound card");
     addOverrideOptions(*cmd, a->overrides);
     commands.push_back({cmd, [a] { return reportErrors([&] { return runRender(*a); }); }});
   }

@@ -5,12 +5,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
+#include "audio/car_synth.h"
+#include "audio/wav_file.h"
 #include "render/headless.h"
 #include "render/png_queue.h"
 #include "render/video_pipe.h"
 #include "demo_common.h"
 #include "interrupt.h"
+#include "session/car_sound.h"
 #include "view/scene_setup.h"
 
 namespace bdfcar::app {
@@ -44,6 +48,17 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     render::VideoOptions vo;
     vo.fps = opt.fps;  // played at the rate it was rendered at: its duration is the manoeuvre's
     video = std::make_unique<render::VideoPipe>(opt.video, opt.width, opt.height, vo);
+  }
+
+  // The soundtrack: a tick's worth of samples after each tick.
+  constexpr int kSoundRate = 48000;
+  std::unique_ptr<audio::WavFile> wav;
+  std::unique_ptr<audio::CarSynth> synth;
+  CarSound carSound;
+  std::vector<float> samples(static_cast<size_t>(std::lround(session.spec().tick * kSoundRate)));
+  if (!opt.wav.empty()) {
+    wav = std::make_unique<audio::WavFile>(opt.wav, kSoundRate);
+    synth = std::make_unique<audio::CarSynth>(kSoundRate);
   }
 
   const double frameDt = 1.0 / opt.fps;
@@ -82,6 +97,10 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     session.tick(std::nullopt);
     lastStep = seconds(Clock::now() - t0);
     r.stats.tick(0, lastStep, false);
+    if (wav) {
+      synth->render(carSound.update(session), samples.data(), static_cast<int>(samples.size()));
+      wav->write(samples.data(), static_cast<long>(samples.size()));
+    }
   }
   const auto t1 = Clock::now();
   if (pngs) {
@@ -89,6 +108,10 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     r.pngEncode = percentiles(pngs->encodeSeconds());
   }
   if (video) video->close();
+  if (wav) {
+    wav->close();
+    r.soundFrames = wav->frames();
+  }
   r.encodeSeconds += seconds(Clock::now() - t1);
   r.wallSeconds = seconds(Clock::now() - wall0);
   return r;

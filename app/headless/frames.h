@@ -16,6 +16,7 @@ struct FramesOptions {
   double fps = 30;
   int width = 1280, height = 720;
   std::string camera = "chase";  // chase, hood, orbit, top-down
+  std::string wav;           // the soundtrack (audio/car_synth.h) as a WAV file; empty: none
 };
 
 struct FramesResult {
@@ -26,6 +27,7 @@ struct FramesResult {
   double wallSeconds = 0;    // the whole run, first frame to the last file closed
   Percentiles pngEncode;     // encoding + writing one PNG (worker thread, overlaps rendering)
   std::string renderer;      // GL_RENDERER
+  long soundFrames = 0;      // samples written to the WAV
 };
 
 // Renders the whole scenario (until its duration or a failure).

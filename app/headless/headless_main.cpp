@@ -6,6 +6,7 @@
 #include "cli_errors.h"
 #include "commands.h"
 #include "process.h"
+#include "render/library_versions.h"
 
 int main(int argc, char** argv) {
   using namespace bdfcar::app;
@@ -13,7 +14,7 @@ int main(int argc, char** argv) {
   CLI::App app{"bdfcar-headless: render bdfcar scenarios to frames and video without a display"};
   app.require_subcommand(0, 1);
   CommandList commands;
-  addVersionCommand(app, commands);
+  addVersionCommand(app, commands, {bdfcar::render::osgVersion()});
   addHeadlessCommands(app, commands);
   requireFiniteNumbers(app);  // the same checks and exit codes as bdfcar (app/cli_errors.h)
   try {

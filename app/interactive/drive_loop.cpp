@@ -2,7 +2,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <mutex>
+
+#include "audio/audio_output.h"
 
 #include "demo_common.h"
 #include "interactive/draw_thread.h"
@@ -10,6 +13,7 @@
 #include "interactive/tick_handler.h"
 #include "interrupt.h"
 #include "render/window.h"
+#include "session/car_sound.h"
 #include "view/scene_setup.h"
 
 namespace bdfcar::app {
@@ -31,6 +35,17 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
   wo.title = "bdfcar - " + session.spec().name;
   render::Window window(scene, wo);
   TickHandler handler(session, opt);
+  // The sound on its own thread, fed each tick (never waited for).
+  std::unique_ptr<audio::AudioOutput> sound;
+  if (opt.sound) {
+    try {
+      sound = std::make_unique<audio::AudioOutput>();
+    } catch (const audio::AudioError& e) {
+      std::fprintf(stderr, "note: %s: driving without sound\n", e.what());
+    }
+  }
+  CarSound carSound;
+  bool soundPaused = false;
   DrawThread drawing(scene, window, stats, statsMutex, session.view(), session.hud(0, 0, ""), opt.screenshot);
 
   TickClock clock(session.spec().tick);
@@ -41,6 +56,10 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
     const double sim0 = session.time();
     const TickOutcome out = handler.handle(window.takeEvents());
     drawing.command(out.view);
+    if (sound) {
+      sound->publish(carSound.update(session));
+      if (handler.paused() != soundPaused) sound->pause(soundPaused = handler.paused());
+    }
     if (out.quit || interruptRequested()) break;
     if (opt.seconds > 0 && clock.sinceStart() >= opt.seconds) break;
     const double physics = std::chrono::duration<double>(TickClock::Clock::now() - clock.tickStart()).count();

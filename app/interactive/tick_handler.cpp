@@ -25,7 +25,7 @@ constexpr double kMessageSeconds = 4.0;
 }  // namespace
 
 TickHandler::TickHandler(DriveSession& session, const InteractiveOptions& options)
-    : session_(session), options_(options) {
+    : session_(session), options_(options), carSteering_(session.simulation().carSteering()) {
   if (options_.driver == DriverSource::Person) {
     input::InputOptions io;
     if (!options_.mappingDir.empty()) io.mappingDir = options_.mappingDir;
@@ -80,8 +80,7 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
     if (out.quit) return out;
     if ((!paused_ || step) && !session_.failed() && !session_.finished())
       // The speed the HUD shows (the last sample's) for speed-sensitive steering.
-      session_.tick(input::toDriverInput(c, session_.simulation().vehicle().spec.steering.steeringWheelFull,
-                                         session_.lastSample().speed));
+      session_.tick(input::toDriverInput(c, carSteering_, session_.lastSample().speed));
   } else if ((!paused_ || step) && !session_.failed() && !session_.finished()) {
     advance();
   }

@@ -37,6 +37,7 @@ class TickHandler {
 
   DriveSession& session_;
   const InteractiveOptions& options_;
+  const scenario::CarSteering carSteering_;  // for speed-sensitive steering and a wheel's own angle
   std::unique_ptr<input::InputSystem> devices_;
   bool paused_ = false;
   size_t replayCursor_ = 0;

@@ -1,5 +1,7 @@
 #include "session/drive_session.h"
 
+#include <cmath>
+
 #include <cstdio>
 #include <algorithm>
 #include <stdexcept>
@@ -95,8 +97,12 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   }
   h.throttle = sim_->lastInput().throttle;
   h.brake = sim_->lastInput().brake;
+  h.speedHold = sim_->speedHoldTarget();
   if (const scenario::Transmission* t = sim_->transmission()) {
+    // The engine's throttle: the driver's, or the speed hold's working the pedal.
     const scenario::PowertrainChannels p = sim_->powertrainChannels();
+    h.throttle = p.throttle;
+    h.speedHold = -1.0;  // it works the throttle shown
     h.powertrain = true;
     h.gear = p.gear;
     h.engineRpm = p.engineRpm;
@@ -115,6 +121,16 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
     // once; through the exit gate with neither, it passes.
     if (!c->passed) h.verdict = "FAILED: " + scenario::courseVerdict(*c).substr(std::string("failed: ").size());
     else if (c->exitTime >= 0) h.verdict = "PASSED";
+  }
+  if (const scenario::LapTimer* l = run_->laps()) {
+    h.lap = l->lap();
+    h.sector = l->sector();
+    h.lapTime = l->lapTime(sample_.t);
+    h.lapValid = l->valid();
+    if (const scenario::LapRecord* last = l->last()) h.lastLap = last->time;
+    if (const scenario::LapRecord* best = l->best()) h.bestLap = best->time;
+    h.lapDelta = l->delta(sample_.t);
+    h.lapDeltaShown = std::isfinite(h.lapDelta);
   }
   h.message = failed() ? failure() : message;
   return h;

@@ -67,6 +67,8 @@ class DriveSession {
   double time() const { return sim_->time(); }
   long ticks() const { return run_->ticks(); }
   bool finished() const { return run_->finished(); }
+  // The lap timing of a scenario with [laps] (nullptr without).
+  const scenario::LapTimer* laps() const { return run_->laps(); }
 
   // The latest state for drawing and the HUD (computes a sample).
   vehicle::VehicleView view();
@@ -78,6 +80,7 @@ class DriveSession {
   double steeringFeel() const;
 
   scenario::Simulation& simulation() { return *sim_; }
+  const scenario::Simulation& simulation() const { return *sim_; }
   const scenario::ScenarioSpec& spec() const { return sim_->spec(); }
 
  private:

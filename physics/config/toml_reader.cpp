@@ -835,6 +835,15 @@ toml::value settingValue(const Setting& s) {
   }
 }
 
+// An empty table whose location is the option: a key path naming a table
+// the file lacks makes one, and a key in it the reader does not know is
+// then reported at the option ("--set chassis.mass=1: unknown key
+// 'chassis'"), not at the file's first line.
+toml::value tableAtOption(const Setting& s) {
+  std::istringstream in("value = {}\n");
+  return toml::parse(in, s.origin()).as_table().at("value");
+}
+
 void applySetting(toml::value& root, const Setting& s) {
   const std::vector<PathStep> steps = splitKeyPath(s);
   toml::value* at = &root;
@@ -851,8 +860,8 @@ void applySetting(toml::value& root, const Setting& s) {
         t[step.name] = settingValue(s);
         return;
       }
-      at = &t[step.name];  // a new table when absent
-      if (at->is_uninitialized()) *at = toml::table{};
+      at = &t[step.name];  // a new table when absent, located at the option (messages name it, not the file)
+      if (at->is_uninitialized()) *at = tableAtOption(s);
       continue;
     }
     const auto it = t.find(step.name);
@@ -885,6 +894,11 @@ Setting parseSetting(const std::string& keyEqualsValue) {
   if (s.key.empty()) throw ConfigError("--set " + keyEqualsValue + ": expected KEY=VALUE, got no key");
   splitKeyPath(s);  // checks the key's form now
   return s;
+}
+
+std::optional<Setting> underPrefix(const Setting& s, const std::string& prefix) {
+  if (s.key.size() <= prefix.size() || s.key.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+  return Setting{s.key.substr(prefix.size()), s.value, s.key + "=" + s.value};
 }
 
 Table parseTomlFile(const std::string& path, const std::vector<Setting>& settings) {

@@ -146,6 +146,10 @@ struct Setting {
 };
 // Splits "KEY=VALUE"; throws ConfigError when there is no '=' or no key.
 Setting parseSetting(const std::string& keyEqualsValue);
+// A setting addressed to a part of the input ("vehicle.springs[0].damping"
+// for the scenario's vehicle): the key below the prefix, its messages still
+// naming the option as written; nullopt when the key does not start with it.
+std::optional<Setting> underPrefix(const Setting& s, const std::string& prefix);
 
 // The key log, for the test that every key a reader looks up is documented
 // (docs/SCENARIOS.md, docs/VEHICLES.md): while on, every key a Table looks up,

@@ -18,4 +18,13 @@ struct DriverInput {
   bool operator==(const DriverInput&) const = default;
 };
 
+// What a person's controls need of the car to become its input: a wheel's
+// own angle against the car's full lock, and speed-sensitive steering's grip
+// law (input/driver_controls.h). Simulation::carSteering gives the car's.
+struct CarSteering {
+  double steeringWheelFull = 0.0;  // rad, the steering-wheel angle at full input (vehicle file)
+  double roadWheelFull = 0.0;      // rad, the road-wheel angle of full input near straight ahead
+  double wheelbase = 0.0;          // m
+};
+
 }  // namespace bdfcar::scenario

@@ -18,6 +18,17 @@ namespace {
 
 constexpr std::size_t kBufferBytes = 1 << 16;
 
+// The folders a new output goes into, made when missing (as `mkdir -p`):
+// `--out runs/today/lap.csv` is a user's request for that place, and a run
+// that fails at its start for want of a folder loses nothing but time.
+void makeParentFolders(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  if (ec) throw OutputError(path + ": cannot make the folder " + parent.string() + ": " + ec.message());
+}
+
 // PATH.partial opened without truncation (another writer's rows are not
 // touched before the lock says whether there is one) and locked.
 int openLocked(const std::string& path, const std::string& writing) {
@@ -76,6 +87,7 @@ RowFile::RowFile(const std::string& path, double flushInterval)
   } else {
     writing_ = partialPath(path);
     renameAtClose_ = true;
+    makeParentFolders(path);
     fd_ = openLocked(path, writing_);
     // Rows already there, with no writer holding the lock: an earlier run of
     // this output that was killed or stopped by a write error. They are the

@@ -27,11 +27,12 @@ Run::Run(Simulation& sim, const RunOptions& config) : sim_(sim), config_(config)
   totalSteps_ = std::lround(spec.duration / h);
   outputEvery_ = std::max(1L, std::lround(spec.outputInterval / h));
   if (!config_.telemetryPath.empty())
-    telemetry_ = std::make_unique<TelemetryWriter>(config_.telemetryPath, sim_.vehicle());
+    telemetry_ = std::make_unique<TelemetryWriter>(config_.telemetryPath, sim_.vehicle(), spec.laps.enabled);
   if (sim_.course()) {
     const auto& g = sim_.vehicle().spec.geometry;
     judge_.emplace(*sim_.course(), g.length, vehicleWidth(sim_.vehicle()), g.bodyOffset);
   }
+  if (spec.laps.enabled) laps_.emplace(spec.laps.line, spec.laps.width, spec.laps.sectors);
   if (config_.sample) sample_ = sim_.sample();
   if (config_.rewindable) {
     snapshotEveryTicks_ = std::max(1L, std::lround(config_.snapshotInterval / spec.tick));
@@ -45,12 +46,15 @@ Run::~Run() = default;
 
 TelemetryInputs Run::rowInputs() const {
   const DriverInput in = sim_.lastInput();
-  return {sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_,
-          static_cast<int>(sim_.vehicle().fidelity), 0.0, sim_.powertrainChannels()};
+  TelemetryInputs ti{sim_.steerAt(sample_.t), in.throttle, in.brake, lastIterations_, lastCorrection_, segment_,
+                     static_cast<int>(sim_.vehicle().fidelity), 0.0, sim_.powertrainChannels(), {}};
+  if (laps_) ti.laps = {laps_->lap(), laps_->lapTime(sample_.t), laps_->distance()};
+  return ti;
 }
 
 void Run::record() {
   if (!config_.sample) return;
+  if (laps_) laps_->update(sample_.t, sample_.com.head<2>());  // before the row, which shows the lap
   TelemetryInputs ti = rowInputs();
   ti.switchJump = sim_.takeSwitchJump();
   writeRow(ti);
@@ -109,12 +113,13 @@ std::string Run::failureText() const {
 }
 
 Run::Snapshot Run::snapshot() {
-  return {sim_.save(), judge_, sample_, steps_, ticks_, lastIterations_, lastCorrection_};
+  return {sim_.save(), judge_, laps_, sample_, steps_, ticks_, lastIterations_, lastCorrection_};
 }
 
 void Run::restoreSnapshot(const Snapshot& s) {
   sim_.restore(s.state);
   judge_ = s.judge;
+  laps_ = s.laps;
   sample_ = s.sample;
   steps_ = s.steps;
   ticks_ = s.ticks;
@@ -143,6 +148,7 @@ void Run::absorbDivergence(const integ::StepReport& rep) {
   const Snapshot& back = snapshots_.empty() ? *initial_ : snapshots_.back();
   restoreSnapshot(back);
   snapshotSinceReset_ = false;
+  rewoundTo_ = -1;
   ++resets_;
   startSegment();
   auto shown = [](double t) { return std::abs(t) < 5e-3 ? 0.0 : t; };  // no "-0.00"
@@ -166,6 +172,7 @@ void Run::restart() {
   restoreSnapshot(*initial_);
   snapshots_.clear();
   snapshotSinceReset_ = true;
+  rewoundTo_ = -1;
   notice_.clear();
   startSegment();
 }
@@ -178,13 +185,19 @@ bool Run::rewind() {
   if (!config_.rewindable) return false;
   // The newest snapshot taken before this tick; a snapshot taken at this very
   // tick (nothing has run since) is skipped so that a press always goes back.
-  while (!snapshots_.empty() && snapshots_.back().ticks >= ticks_) snapshots_.pop_back();
+  // A press shortly after the last rewind goes on from where that one landed
+  // (the snapshot there would otherwise be found again, and a held key, a
+  // press every few ticks, would not get past it).
+  const bool chained = rewoundTo_ >= 0 && ticks_ - rewoundTo_ < kRewindChain * snapshotEveryTicks_;
+  const long before = chained ? rewoundTo_ : ticks_;
+  while (!snapshots_.empty() && snapshots_.back().ticks >= before) snapshots_.pop_back();
   if (snapshots_.empty()) {
     if (ticks_ == 0) return false;
     restoreSnapshot(*initial_);
   } else {
     restoreSnapshot(snapshots_.back());
   }
+  rewoundTo_ = ticks_;
   snapshotSinceReset_ = true;
   startSegment();
   return true;
@@ -224,6 +237,7 @@ RunResult runScenario(Simulation& sim, const RunOptions& options) {
   r.steps = run->steps();
   r.simulatedSeconds = r.steps * sim.spec().integrator.step;
   r.course = run->course();
+  if (const LapTimer* l = run->laps()) r.laps = l->laps();
   r.counters = sim.counters();
   r.timers = sim.timers();
   r.fidelitySwitches = sim.fidelitySwitches();

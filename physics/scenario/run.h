@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "scenario/course_judge.h"
+#include "scenario/lap_timer.h"
 #include "scenario/simulation.h"
 #include "scenario/telemetry.h"
 
@@ -58,6 +59,7 @@ struct RunResult {
   std::vector<vehicle::VehicleSample> samples;  // one per output interval (when kept)
   std::vector<double> steerInputs;  // steering input per sample
   std::optional<CourseResult> course;  // when the scenario has a course
+  std::vector<LapRecord> laps;      // the laps completed, when the scenario times laps
   bool interrupted = false;         // ended early on options.stopRequested
   std::string interruptedWhileSettling;  // not empty: stopped before the run began (what prepare said)
   std::vector<float> stepSeconds;   // wall time of each manoeuvre step (per-step cost)
@@ -87,8 +89,13 @@ class Run {
   bool tick(const std::optional<DriverInput>& input);
   // Back to the start of the manoeuvre (restartable runs: an assignment).
   void restart();
-  // One snapshot back (rewindable runs); false when there is none.
+  // One snapshot (snapshotInterval) back, rewindable runs; false when there
+  // is none. A rewind soon after another (within kRewindChain intervals of
+  // driving since where that one landed) goes on from there, one more
+  // snapshot back: repeated or held, it keeps going back, paused or driving,
+  // up to snapshotHistory.
   bool rewind();
+  static constexpr long kRewindChain = 2;
   // Writes the telemetry out and closes it; throws OutputError on a write error.
   void closeOutputs();
   // The telemetry's segment: 0 from the start, +1 at each restart, rewind
@@ -118,6 +125,8 @@ class Run {
   const vehicle::EquilibriumReport& equilibrium() const { return equilibrium_; }
   const vehicle::VehicleSample& lastSample() const { return sample_; }
   std::optional<CourseResult> course() const;
+  // The lap timing of a scenario with [laps] (nullptr without).
+  const LapTimer* laps() const { return laps_ ? &*laps_ : nullptr; }
   // Moves the kept samples out (RunResult).
   std::vector<vehicle::VehicleSample>& samples() { return samples_; }
   std::vector<double>& steerInputs() { return steerInputs_; }
@@ -130,6 +139,7 @@ class Run {
   struct Snapshot {
     RunState state;
     std::optional<CourseJudge> judge;
+    std::optional<LapTimer> laps;
     vehicle::VehicleSample sample;
     long steps = 0, ticks = 0;
     int lastIterations = 0;
@@ -148,6 +158,7 @@ class Run {
   vehicle::EquilibriumReport equilibrium_;
   std::unique_ptr<TelemetryWriter> telemetry_;
   std::optional<CourseJudge> judge_;
+  std::optional<LapTimer> laps_;  // the scenario's [laps]
   vehicle::VehicleSample sample_;
   std::vector<vehicle::VehicleSample> samples_;
   std::vector<double> steerInputs_;
@@ -165,6 +176,7 @@ class Run {
   long snapshotEveryTicks_ = 0;
   size_t maxSnapshots_ = 0;
   bool snapshotSinceReset_ = true;
+  long rewoundTo_ = -1;  // the tick the last rewind landed at (-1: none since a restart or a reset)
   int resets_ = 0, segment_ = 0;
   std::string notice_, divergence_;
 };

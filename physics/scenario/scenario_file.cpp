@@ -288,8 +288,8 @@ int stepsPerTick(double tick, double step) {
   return n >= 1 && n <= 1e6 && std::abs(n * step - tick) <= 1e-9 * tick ? static_cast<int>(n) : 0;
 }
 
-// `type = "track"`: the centre line of the scenario terrain's track piece named `track`.
-void readTrackPath(Table& d, const std::string& terrainFile, PathFollowerSpec& f) {
+// The centre line of the scenario terrain's track piece named by `track`.
+terrain::WorldCentreLine readTrack(Table& d, const std::string& terrainFile) {
   const std::string name = d.string("track");
   if (terrainFile.empty()) d.fail("follows track '" + name + "', but the scenario names no terrain", "track");
   terrain::TerrainData data;
@@ -306,17 +306,15 @@ void readTrackPath(Table& d, const std::string& terrainFile, PathFollowerSpec& f
     if (!data.centreLine.empty()) known = "'" + data.name + "'";
     d.fail("names no track of terrain '" + terrainFile + "'; its tracks: " + (known.empty() ? "none" : known), "track");
   }
-  f.path = PathFollowerSpec::Path::Polyline;
-  f.points = std::move(line.points);
-  f.closed = line.closed;
+  return line;
 }
 
 ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config::Setting>& settings) {
   std::vector<config::Setting> own;
   ScenarioSpec s;
   for (const config::Setting& x : settings) {
-    if (x.key.rfind("vehicle.", 0) == 0)
-      s.vehicleSettings.push_back({x.key.substr(8), x.value, x.key + "=" + x.value});
+    if (std::optional<config::Setting> v = config::underPrefix(x, "vehicle."))
+      s.vehicleSettings.push_back(*v);
     else
       own.push_back(x);
   }
@@ -435,7 +433,10 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
       if (f.points.size() < 2) d->fail("the path '" + path + "' needs at least two distinct points", "file");
       f.closed = d->boolean("closed", false);
     } else if (type == "track") {
-      readTrackPath(*d, s.terrainFile, f);
+      terrain::WorldCentreLine line = readTrack(*d, s.terrainFile);
+      f.path = PathFollowerSpec::Path::Polyline;
+      f.points = std::move(line.points);
+      f.closed = line.closed;
     } else if (type == "circle") {
       f.path = PathFollowerSpec::Path::Circle;
       f.radius = d->number("radius", Dimension::Length, Range{1.0, 1e4});
@@ -445,6 +446,12 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     if (type == "path_follower" && !s.course.iso3888)
       root.fail("a path_follower driver needs a [course] to follow (or type = \"path\", \"track\" or \"circle\")", "driver");
     if (s.steering.kind != SignalSpec::Kind::None) root.fail("give either [steering] or a path_follower [driver], not both", "driver");
+  }
+  if (auto l = root.optionalTable("laps")) {
+    terrain::WorldCentreLine line = readTrack(*l, s.terrainFile);
+    if (!line.closed) l->fail("track '" + l->string("track") + "' is not a circuit (its centre line is open): no laps to time", "track");
+    s.laps = {true, std::move(line.points), line.width, static_cast<int>(l->integerIn("sectors", 1, 20, 3))};
+    l->finish();
   }
   if (auto c = root.optionalTable("check")) s.check = readCheck(*c);
   if (auto m = root.optionalTable("metrics")) {

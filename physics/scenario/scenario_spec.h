@@ -76,6 +76,14 @@ struct PathFollowerSpec {
   double direction = 1;        // +1 left (counter-clockwise), -1 right
 };
 
+// [laps]: lap timing on a closed track of the scenario's terrain (lap_timer.h).
+struct LapTimingSpec {
+  bool enabled = false;
+  std::vector<Eigen::Vector2d> line;  // the track's centre line, world, closed; the start line at its first point
+  double width = 0;                   // m, the road's (0: not known: no cut is judged)
+  int sectors = 3;
+};
+
 // What a hard case must show ([check] in a scenario file; `bdfcar check`).
 // Every run must finish without a divergence and with finite states; the
 // outcome names what the car must do; the bounds are physical limits.
@@ -143,6 +151,7 @@ struct ScenarioSpec {
   SpeedControlSpec speedControl;
   CourseSpec course;
   PathFollowerSpec pathFollower;
+  LapTimingSpec laps;
   CheckSpec check;
   StandardTest standardTest = StandardTest::None;
 };

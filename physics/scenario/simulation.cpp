@@ -72,6 +72,11 @@ std::unique_ptr<Signal> steeringSignal(const ScenarioSpec& spec) {
 }
 }  // namespace
 
+CarSteering Simulation::carSteering() const {
+  const vehicle::Vehicle& v = world_->vehicle;
+  return {v.spec.steering.steeringWheelFull, vehicle::roadWheelAnglePerSteer(v), v.spec.geometry.wheelbase};
+}
+
 Simulation::Simulation(const ScenarioSpec& spec) : Simulation(buildWorld(spec)) {}
 
 Simulation::Simulation(std::shared_ptr<const World> world)

@@ -226,6 +226,11 @@ class Simulation {
   // Steering input in [-1, 1] applied at time t (scripted, path follower or person).
   double steerAt(double t) const { return rack_.steerAt(t); }
   DriverInput lastInput() const { return state_.input; }
+  // The car's steering as a person's controls need it (the linkage's).
+  CarSteering carSteering() const;
+  // The speed the scenario's speed hold keeps now (m/s), or -1 when none
+  // does: it drives the car then, whatever the throttle input says.
+  double speedHoldTarget() const { return speed_ && speed_->active(time()) ? speed_->target(time()) : -1.0; }
   double driveTorque(int wheel) const { return forces_->wheels()[wheel].driveTorque; }
   // A powertrain's controller (none without a powertrain) and its driveline's latest evaluation.
   const Transmission* transmission() const { return transmission_ ? &*transmission_ : nullptr; }

@@ -7,9 +7,9 @@
 
 namespace bdfcar::scenario {
 
-TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v)
-    : file_(path), maker_(v), queue_(kQueueRows) {
-  file_.append(header(v) + "\n");
+TelemetryWriter::TelemetryWriter(const std::string& path, const vehicle::Vehicle& v, bool laps)
+    : file_(path), maker_(v, laps), queue_(kQueueRows) {
+  file_.append(header(v, laps) + "\n");
   thread_ = std::thread([this] { writerLoop(); });
 }
 

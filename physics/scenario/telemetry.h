@@ -30,7 +30,8 @@ namespace bdfcar::scenario {
 class TelemetryWriter {
  public:
   // Opens the file (throws OutputError naming it on failure) and writes the header.
-  TelemetryWriter(const std::string& path, const vehicle::Vehicle& v);
+  // laps: the scenario times laps (TelemetryRowMaker's lap columns).
+  TelemetryWriter(const std::string& path, const vehicle::Vehicle& v, bool laps = false);
   ~TelemetryWriter();  // drains and closes; a failure there is lost, so call close()
   TelemetryWriter(const TelemetryWriter&) = delete;
   TelemetryWriter& operator=(const TelemetryWriter&) = delete;
@@ -44,7 +45,7 @@ class TelemetryWriter {
   const std::string& path() const { return file_.path(); }
   // The header (TelemetryRowMaker's names).
   static const char* header() { return TelemetryRowMaker::header(); }
-  static std::string header(const vehicle::Vehicle& v) { return TelemetryRowMaker::header(v); }
+  static std::string header(const vehicle::Vehicle& v, bool laps = false) { return TelemetryRowMaker::header(v, laps); }
   static const char* powertrainHeader() { return TelemetryRowMaker::powertrainHeader(); }
 
  private:

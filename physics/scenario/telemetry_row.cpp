@@ -30,16 +30,23 @@ const char* TelemetryRowMaker::powertrainHeader() {
   return "engine_rpm,gear,clutch,clutch_slip_rpm,engine_torque_Nm,clutch_torque_Nm,engine_throttle,handbrake_in";
 }
 
-std::string TelemetryRowMaker::header(const vehicle::Vehicle& v) {
-  return v.spec.powertrain ? std::string(header()) + "," + powertrainHeader() : std::string(header());
+const char* TelemetryRowMaker::lapHeader() { return "lap,lap_time_s,lap_distance_m"; }
+
+std::string TelemetryRowMaker::header(const vehicle::Vehicle& v, bool laps) {
+  std::string h = header();
+  if (v.spec.powertrain) h += std::string(",") + powertrainHeader();
+  if (laps) h += std::string(",") + lapHeader();
+  return h;
 }
 
-TelemetryRowMaker::TelemetryRowMaker(const vehicle::Vehicle& v)
-    : v_(v), columns_(v.spec.powertrain ? kMaxColumns : kBaseColumns) {}
+TelemetryRowMaker::TelemetryRowMaker(const vehicle::Vehicle& v, bool laps)
+    : v_(v),
+      laps_(laps),
+      columns_(kBaseColumns + (v.spec.powertrain ? kPowertrainColumns : 0) + (laps ? kLapColumns : 0)) {}
 
 std::vector<std::string> TelemetryRowMaker::names() const {
   std::vector<std::string> out;
-  std::istringstream in(header(v_));
+  std::istringstream in(header(v_, laps_));
   for (std::string name; std::getline(in, name, ',');) out.push_back(name);
   return out;
 }
@@ -90,6 +97,7 @@ void TelemetryRowMaker::fill(const vehicle::VehicleSample& s, const TelemetryInp
     put({pt.engineRpm, double(pt.gear), pt.clutch, pt.clutchSlipRpm, pt.engineTorque, pt.clutchTorque, pt.throttle,
          pt.handbrake});
   }
+  if (laps_) put({double(in.laps.lap), in.laps.lapTime, in.laps.distance});  // the lap: a whole number, printed as one
 }
 
 }  // namespace bdfcar::scenario

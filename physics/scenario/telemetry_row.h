@@ -25,6 +25,13 @@ struct PowertrainChannels {
   double handbrake = 0;      // [0, 1]
 };
 
+// Lap timing's channels (columns after the others, on a scenario with [laps]).
+struct LapChannels {
+  int lap = 0;               // the lap under way: 0 the out lap, then 1, 2, ...
+  double lapTime = -1;       // s into it (-1 on the out lap)
+  double distance = 0;       // m along the track from the start line
+};
+
 // Quantities of a row that are not in the vehicle sample.
 struct TelemetryInputs {
   double steer = 0;      // normalised steering input s
@@ -35,6 +42,7 @@ struct TelemetryInputs {
   int fidelity = 0;             // the model driving: vehicle::Fidelity (0 linkage, 1 kinematic, 2 planar)
   double switchJump = 0;        // m, the chassis moved by rung switches since the last row (`auto`)
   PowertrainChannels powertrain;  // written when the vehicle has a powertrain
+  LapChannels laps;               // written when the scenario times laps
 };
 
 // How the file prints a column: 10 significant digits, 4 (the Newton
@@ -43,16 +51,18 @@ enum class ColumnFormat : unsigned char { Real10, Real4, Integer };
 
 class TelemetryRowMaker {
  public:
-  static constexpr int kBaseColumns = 87, kPowertrainColumns = 8;
-  static constexpr int kMaxColumns = kBaseColumns + kPowertrainColumns;
+  static constexpr int kBaseColumns = 87, kPowertrainColumns = 8, kLapColumns = 3;
+  static constexpr int kMaxColumns = kBaseColumns + kPowertrainColumns + kLapColumns;
   using Values = std::array<double, kMaxColumns>;
 
-  explicit TelemetryRowMaker(const vehicle::Vehicle& v);
+  // laps: the scenario times laps (its lap columns after the rest).
+  explicit TelemetryRowMaker(const vehicle::Vehicle& v, bool laps = false);
   int columns() const { return columns_; }
   // The header's names, with their units (docs/TELEMETRY.md).
   static const char* header();
   static const char* powertrainHeader();
-  static std::string header(const vehicle::Vehicle& v);
+  static const char* lapHeader();
+  static std::string header(const vehicle::Vehicle& v, bool laps = false);
   std::vector<std::string> names() const;
   static ColumnFormat format(int column);
 
@@ -62,6 +72,7 @@ class TelemetryRowMaker {
 
  private:
   const vehicle::Vehicle& v_;
+  bool laps_ = false;
   int columns_ = kBaseColumns;
   bool first_ = true;
   double z0_ = 0, rack0_ = 0;

@@ -59,7 +59,7 @@ Eigen::Vector3d GroundPiece::toLocal(const Eigen::Vector3d& world) const { retur
 // The terrain's own centre line, or that of its piece of this name, in world coordinates.
 bool findCentreLine(const TerrainData& data, const std::string& name, WorldCentreLine& out) {
   if (data.name == name && !data.centreLine.empty()) {
-    out = {data.centreLine, data.centreLineClosed};
+    out = {data.centreLine, data.centreLineClosed, data.centreLineWidth};
     return true;
   }
   for (const GroundPiece& p : data.pieces) {
@@ -67,6 +67,7 @@ bool findCentreLine(const TerrainData& data, const std::string& name, WorldCentr
     out.points.clear();
     for (const Eigen::Vector2d& q : p.terrain.centreLine) out.points.push_back(p.toWorld({q.x(), q.y(), 0}).head<2>());
     out.closed = p.terrain.centreLineClosed;
+    out.width = p.terrain.centreLineWidth;
     return true;
   }
   return false;

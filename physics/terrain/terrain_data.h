@@ -65,6 +65,7 @@ struct TerrainData {
   // path a driver may follow around it; closed if the track is a circuit.
   std::vector<Eigen::Vector2d> centreLine;
   bool centreLineClosed = false;
+  double centreLineWidth = 0;  // m, the road's width along it (0: not a road)
   // Ground: the plane (planePoint, planeNormal, friction, frictionPatches,
   // material) with these pieces placed on it.
   std::vector<GroundPiece> pieces;
@@ -101,6 +102,7 @@ struct GroundPiece {
 struct WorldCentreLine {
   std::vector<Eigen::Vector2d> points;
   bool closed = false;
+  double width = 0;  // m, the road's (0: not known)
 };
 bool findCentreLine(const TerrainData& data, const std::string& name, WorldCentreLine& out);
 

@@ -159,6 +159,7 @@ void buildTrackMesh(const Track& track, TerrainData& data) {
   data.centreLine.clear();
   for (int i = 0; i < (track.closed ? n - 1 : n); ++i) data.centreLine.push_back(line[i].p);
   data.centreLineClosed = track.closed;
+  data.centreLineWidth = track.width;
 }
 
 }  // namespace bdfcar::terrain

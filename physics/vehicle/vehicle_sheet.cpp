@@ -81,6 +81,13 @@ double ackermannPercent(double inner, double outer, double wheelbase, double tra
   return 100 * (inner - outer) / (inner - ackermannOuter(inner, wheelbase, track));
 }
 
+std::string ackermannText(double percent) {
+  if (std::isnan(percent)) return "Ackermann not measured: the steering does not reach 10 deg of inner road-wheel angle";
+  char text[96];
+  std::snprintf(text, sizeof text, "Ackermann %.0f %% at 10 deg inner road-wheel angle", percent);
+  return text;
+}
+
 std::string describe(const VehicleSheet& s) {
   char buf[1600];
   std::snprintf(buf, sizeof buf,
@@ -91,12 +98,12 @@ std::string describe(const VehicleSheet& s) {
                 "  wheel rates %.0f / %.0f N/m front, %.0f / %.0f N/m rear; with the tyre %.0f / %.0f, %.0f / %.0f N/m\n"
                 "  ride frequencies %.2f Hz front, %.2f Hz rear\n"
                 "  roll centres %.3f m front, %.3f m rear; roll stiffness %.0f N m/deg\n"
-                "  steering ratio %.2f:1; Ackermann %.0f %% at 10 deg inner road-wheel angle\n",
+                "  steering ratio %.2f:1; %s\n",
                 s.mass, s.comHeight, s.comBehindFrontAxle, s.wheelbase, s.track[0], s.track[1], s.axleLoad[0],
                 s.axleLoad[1], 100 * s.axleLoad[0] / (s.axleLoad[0] + s.axleLoad[1]), s.wheelRate[0], s.wheelRate[1],
                 s.wheelRate[2], s.wheelRate[3], s.rideRate[0], s.rideRate[1], s.rideRate[2], s.rideRate[3],
                 s.rideFrequency[0], s.rideFrequency[1], s.rollCentre[0], s.rollCentre[1], s.rollStiffness * kPi / 180,
-                s.steeringRatio, s.ackermann);
+                s.steeringRatio, ackermannText(s.ackermann).c_str());
   return buf;
 }
 

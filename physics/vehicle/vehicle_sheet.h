@@ -39,5 +39,8 @@ std::string describe(const VehicleSheet& s);
 // gives (100 = Ackermann, 0 = parallel); angles in rad, inner > 0.
 double ackermannOuter(double inner, double wheelbase, double track);
 double ackermannPercent(double inner, double outer, double wheelbase, double track);
+// "Ackermann 35 % at 10 deg inner road-wheel angle", or what a NaN (the
+// steering does not reach 10 deg) means, for the sheets.
+std::string ackermannText(double percent);
 
 }  // namespace bdfcar::vehicle

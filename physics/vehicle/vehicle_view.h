@@ -66,7 +66,8 @@ struct HudInfo {
   // drawing and encoding together: the rendering's speed, not the car's).
   std::string realTimeLabel = "RTF";
   double stepTime = 0.0;            // s of wall time per 10 ms physics step
-  double throttle = 0.0, brake = 0.0;  // 0..1
+  double throttle = 0.0, brake = 0.0;  // 0..1: the pedals the car gets (a speed hold's included)
+  double speedHold = -1.0;          // m/s a speed hold keeps (it drives: no throttle to show), -1 none
   // A car with a powertrain: its gear (-1 R, 0 N, 1..n) and engine speed.
   bool powertrain = false;
   int gear = 0;
@@ -76,6 +77,12 @@ struct HudInfo {
   int coneHits = -1;                // -1 = not on a cone course
   std::vector<std::pair<int, double>> knockedCones;  // index in the course's cones, heading of the car that hit it (rad)
   double courseTime = -1.0;         // s, -1 = not timing
+  // Lap timing (a scenario with [laps]): the lap under way (-1: no timing,
+  // 0: the out lap), the sector, its time so far, the last and the best lap
+  // (s, -1 none), the delta to the best at the same distance (s, NaN none).
+  int lap = -1, sector = 0;
+  double lapTime = -1.0, lastLap = -1.0, bestLap = -1.0, lapDelta = 0.0;
+  bool lapDeltaShown = false, lapValid = true;
   // The course's verdict the moment it is decided: "" while open, else
   // "PASSED" or "FAILED: why".
   std::string verdict;

@@ -19,9 +19,19 @@ inline constexpr int kAxisCount = 5;
 // steering input is scaled by 1 at a standstill, falling linearly with the
 // car's speed to `scale` at `speed` and held there above it. Off (speed 0,
 // the default): the input is left exactly as it is.
+//
+// Or, with lateralAcceleration set (the grip law), the input is scaled so
+// that full input asks the car for that lateral acceleration at any speed,
+// as a kinematic (no-slip) car would turn: by a L / (v^2 delta), delta the
+// road-wheel angle of full input and L the wheelbase (the car's), never
+// above 1 (full lock at low speed) nor below `scale`. Full lock then means
+// "as hard as the grip allows" at every speed: the lock and the rate at
+// which a key winds it on fall as 1 / v^2, the way a driver's hands do.
 struct SpeedSensitiveSteering {
   double speed = 0.0;  // m/s at which the scale reaches `scale`; 0: off
-  double scale = 1.0;  // (0, 1]: the fraction of the input kept at and above `speed`
+  double scale = 1.0;  // (0, 1]: the fraction of the input kept at and above `speed` (the grip law: the least kept)
+  double lateralAcceleration = 0.0;  // m/s^2: the grip law (speed is 0 then); 0: the linear law or off
+  bool on() const { return speed > 0.0 || lateralAcceleration > 0.0; }
 };
 
 // Edge-triggered commands: true in the one tick in which the button went down.

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "terrain/terrain.h"
 #include "terrain/terrain_data.h"
@@ -25,5 +26,8 @@ constexpr double kMaxRayLength = 1.0e5;  // m
 // PlaneTerrain for a plane, the Bullet terrains for a mesh or a heightfield;
 // std::invalid_argument if the data are inconsistent (see checkTerrainData).
 std::unique_ptr<Terrain> makeTerrain(const TerrainData& data);
+
+// The Bullet version this was built with ("3.24"), for `bdfcar version`.
+std::string bulletVersion();
 
 }  // namespace bdfcar::terrain

@@ -2,6 +2,9 @@
 #include "terrain/bullet/bullet_shapes.h"
 #include "terrain/bullet/bullet_terrain.h"
 
+#include <LinearMath/btScalar.h>
+#include <string>
+
 namespace bdfcar::terrain {
 
 namespace {
@@ -52,6 +55,11 @@ std::unique_ptr<Terrain> makeTerrain(const TerrainData& data) {
   // A ground's plane carries its patches itself (ground_terrain.cpp): they are not for its pieces.
   if (data.frictionPatches.empty() || data.kind == TerrainKind::Ground) return surface;
   return std::make_unique<PatchedFriction>(std::move(surface), data.frictionPatches);
+}
+
+std::string bulletVersion() {
+  const int v = btGetVersion();  // major * 100 + minor
+  return std::to_string(v / 100) + "." + std::to_string(v % 100);
 }
 
 }  // namespace bdfcar::terrain
