@@ -15,6 +15,10 @@ bool& actionFlag(Controls& controls, Action action) {
     case Action::Record: return controls.record;
     case Action::Quit: return controls.quit;
     case Action::Rewind: return controls.rewind;
+    case Action::Menu: return controls.menu;
+    case Action::MenuUp: return controls.menuUp;
+    case Action::MenuDown: return controls.menuDown;
+    case Action::MenuSelect: return controls.menuSelect;
   }
   return controls.quit;  // unreachable: the switch covers the enum
 }
@@ -26,8 +30,9 @@ bool actionFlag(const Controls& controls, Action action) {
 
 // Mapping-file names, in enum order.
 constexpr std::string_view kAxisNames[kAxisCount] = {"steering", "throttle", "brake", "clutch", "handbrake"};
-constexpr std::string_view kActionNames[kActionCount] = {"gear_up", "gear_down", "reset",  "pause",
-                                                         "single_step", "camera", "view", "record", "quit", "rewind"};
+constexpr std::string_view kActionNames[kActionCount] = {
+    "gear_up", "gear_down", "reset", "pause", "single_step", "camera", "view", "record", "quit", "rewind",
+    "menu",    "menu_up",   "menu_down", "menu_select"};
 constexpr std::string_view kDeviceKindNames[] = {"keyboard", "wheel", "gamecontroller", "joystick"};
 
 // Mapping-file name of an analog control.

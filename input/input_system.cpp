@@ -85,10 +85,12 @@ void disconnect(State& s, SDL_JoystickID id) {
 }
 
 // Marks the actions bound to `code` in `mapping` as fired this tick; with
-// onlyRepeating, those a held key repeats (rewind: held, it keeps going back).
+// onlyRepeating, those a held key repeats (rewind: held, it keeps going
+// back; the menu's up and down: held, they move on).
 void fireActions(const DeviceMapping& mapping, int code, Controls& c, bool onlyRepeating = false) {
   for (int a = 0; a < kActionCount; ++a) {
-    if (onlyRepeating && static_cast<Action>(a) != Action::Rewind) continue;
+    const Action action = static_cast<Action>(a);
+    if (onlyRepeating && action != Action::Rewind && action != Action::MenuUp && action != Action::MenuDown) continue;
     const std::vector<int>& codes = mapping.actions[a];
     if (std::find(codes.begin(), codes.end(), code) != codes.end()) actionFlag(c, static_cast<Action>(a)) = true;
   }

@@ -92,12 +92,14 @@ HudNode::HudNode() : camera_(new osg::Camera) {
   figures_ = makeText(osgText::Text::LEFT_TOP);
   course_ = makeText(osgText::Text::RIGHT_TOP);
   message_ = makeText(osgText::Text::CENTER_BOTTOM);
+  menu_ = makeText(osgText::Text::LEFT_CENTER);
   gg_ = std::make_unique<GgDiagram>(font_.get());
   osg::ref_ptr<osg::Geode> geode = new osg::Geode;
   geode->addDrawable(panels_.get());
   geode->addDrawable(figures_.get());
   geode->addDrawable(course_.get());
   geode->addDrawable(message_.get());
+  geode->addDrawable(menu_.get());
   camera_->addChild(geode);
   camera_->addChild(gg_->node());  // after the panels: drawn over its own
   layout(1280, 720);
@@ -165,6 +167,24 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   if (hud.bestLap >= 0) right += "\nbest " + scenario::lapClock(hud.bestLap);
   setIfChanged(*course_, right);
   setIfChanged(*message_, hud.message);
+  setIfChanged(*menu_, hud.menu);
+  int menuLines = 0, menuColumns = 0;
+  if (!hud.menu.empty()) {
+    menuLines = 1;
+    for (std::size_t start = 0; start <= hud.menu.size();) {
+      const std::size_t end = std::min(hud.menu.find('\n', start), hud.menu.size());
+      menuColumns = std::max(menuColumns, static_cast<int>(end - start));
+      if (end < hud.menu.size()) ++menuLines;
+      start = end + 1;
+    }
+  }
+  if (menuLines != menuLines_ || menuColumns != menuColumns_) {
+    menuLines_ = menuLines;
+    menuColumns_ = menuColumns;
+    const int w = width_, h = height_;
+    width_ = 0;  // the menu's panel opens, closes or changes size
+    layout(w, h);
+  }
 
   const bool showMessage = !hud.message.empty();
   const int courseLines = 1 + static_cast<int>(std::count(right.begin(), right.end(), '\n'));
@@ -200,15 +220,27 @@ void HudNode::layout(int width, int height) {
     t->setCharacterSize(size);
     t->setFontResolution(fontPixels, fontPixels);
   }
+  // The menu smaller, so that it fits between the side panels.
+  const float menuSize = 0.75f * size, menuLineHeight = menuSize * 1.18f, menuCharWidth = menuSize * 0.63f;
+  const unsigned menuPixels = static_cast<unsigned>(std::lround(menuSize));
+  menu_->setCharacterSize(menuSize);
+  menu_->setFontResolution(menuPixels, menuPixels);
   figures_->setPosition(osg::Vec3(margin + pad, height - margin - pad, 0));
   course_->setPosition(osg::Vec3(width - margin - pad, height - margin - pad, 0));
   message_->setPosition(osg::Vec3(width / 2.0f, margin + pad, 0));
+  // The menu in the middle, as wide as its longest line (at most the window).
+  const float menuHalf = std::min(0.49f * width, 0.5f * menuCharWidth * float(menuColumns_) + pad);
+  menu_->setPosition(osg::Vec3(width / 2.0f - menuHalf + pad, height / 2.0f, 0));
 
   osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
   addRect(*v, margin, height - margin - 2 * pad - figureLines_ * lineHeight, margin + 2 * pad + kFigureColumns * charWidth,
           height - margin);
   addRect(*v, width - margin - 2 * pad - float(courseColumns_) * charWidth, height - margin - 2 * pad - courseLines_ * lineHeight,
           width - margin, height - margin);
+  if (menuLines_ > 0) {
+    const float half = 0.5f * menuLines_ * menuLineHeight + pad;
+    addRect(*v, width / 2.0f - menuHalf, height / 2.0f - half, width / 2.0f + menuHalf, height / 2.0f + half);
+  }
   if (showMessage_) {
     const float half = std::min(0.48f * width, 0.5f * charWidth * float(message_->getText().size()) + pad);
     addRect(*v, width / 2.0f - half, margin, width / 2.0f + half, margin + 2 * pad + lineHeight);

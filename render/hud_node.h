@@ -32,13 +32,14 @@ class HudNode {
   osg::ref_ptr<osg::Camera> camera_;
   osg::ref_ptr<osgText::Font> font_;
   bool unicode_ = false;  // the font has degree and superscript signs
-  osg::ref_ptr<osgText::Text> figures_, course_, message_;
+  osg::ref_ptr<osgText::Text> figures_, course_, message_, menu_;
   osg::ref_ptr<osg::Geometry> panels_;
   std::unique_ptr<GgDiagram> gg_;  // built once the font is loaded
   int width_ = 0, height_ = 0;
   bool showMessage_ = false;
   int courseLines_ = 2;
   int courseColumns_ = 18;
+  int menuLines_ = 0, menuColumns_ = 0;  // the pause menu's panel (0: closed)
   int figureLines_ = 7;  // kFigureLines, one more with a powertrain
 };
 

@@ -4,6 +4,7 @@
 // recording refuses to replay against other data.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 
 #include <iterator>
@@ -15,6 +16,7 @@
 #include <sstream>
 
 #include "session/drive_session.h"
+#include "session/pause_menu.h"
 
 #include "test_files.h"
 
@@ -324,4 +326,86 @@ TEST(DriveSession, TheHudShowsWhatASpeedHoldDoes) {
   EXPECT_EQ(h.speedHold, -1.0);
   EXPECT_GT(h.throttle, 0.02);  // drag and rolling at 80 km/h need some
   EXPECT_LE(h.throttle, 1.0);
+}
+
+// The pause menu: resume, restart, a "go to" per place, quit; up and down
+// wrap round; select gives the highlighted item's choice and closes.
+TEST(PauseMenu, ListsThePlacesAndGivesTheChoice) {
+  const std::vector<scenario::Place> places{{"hill", 1, 2, 0}, {"skid pad", 3, 4, 0}};
+  app::PauseMenu m(places);
+  EXPECT_FALSE(m.isOpen());
+  m.open();
+  ASSERT_EQ(m.items(), 5);
+  m.up();  // from the first to the last: quit
+  EXPECT_EQ(m.selected(), 4);
+  m.down();
+  m.down();
+  m.down();
+  m.down();  // resume, restart, hill, skid pad
+  EXPECT_NE(m.text().find("> go to: skid pad"), std::string::npos) << m.text();
+  const app::MenuChoice c = m.select();
+  EXPECT_EQ(c.kind, app::MenuChoice::Kind::GoTo);
+  EXPECT_EQ(c.place, 1);
+  EXPECT_FALSE(m.isOpen());
+  m.open();
+  EXPECT_EQ(m.select().kind, app::MenuChoice::Kind::Resume);  // opens at its first item
+}
+
+// Every place of the default drive is a start: the car there at rest on
+// its four wheels, at time 0 in a new telemetry segment; restart comes back
+// to the place; a place that is not one is refused and the drive goes on as
+// it was; a recording goes there on replay.
+TEST(DriveSession, GoingToEachPlaceOfTheSceneStartsTheDriveThere) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive_powertrain.toml"));
+  ASSERT_GE(spec.places.size(), 5u);
+  const std::string rec = temp("places.rec"), csv = temp("places.csv"), again = temp("places_replayed.csv");
+  {
+    app::SessionOptions o;
+    o.rewindable = true;
+    o.recordPath = rec;
+    o.telemetryPath = csv;
+    app::DriveSession d(spec, o);
+    for (int p = 0; p < static_cast<int>(spec.places.size()); ++p) {
+      SCOPED_TRACE(spec.places[p].name);
+      for (int i = 0; i < 20; ++i) ASSERT_TRUE(d.tick(scenario::DriverInput{0.0, 0.3, 0.0})) << d.failure();
+      const int segment = d.segment();
+      ASSERT_TRUE(d.goTo(p)) << d.placeNotice();
+      EXPECT_EQ(d.segment(), segment + 1);
+      EXPECT_NEAR(d.time(), 0.0, 1e-9);
+      const vehicle::VehicleSample& s = d.lastSample();
+      EXPECT_NEAR(s.chassisOrigin.x(), spec.places[p].x, 0.1);
+      EXPECT_NEAR(s.chassisOrigin.y(), spec.places[p].y, 0.1);
+      EXPECT_LT(s.speed, 0.05);
+      for (int w = 0; w < 4; ++w) EXPECT_TRUE(s.inContact[w]) << w;
+    }
+    // Restart: back to the last place, not to [start].
+    for (int i = 0; i < 50; ++i) ASSERT_TRUE(d.tick(scenario::DriverInput{0.0, 0.5, 0.0})) << d.failure();
+    d.restart();
+    EXPECT_NEAR(d.lastSample().chassisOrigin.x(), spec.places.back().x, 0.1);
+    // Nowhere: refused, the drive where it was.
+    EXPECT_FALSE(d.goTo(static_cast<int>(spec.places.size())));
+    for (int i = 0; i < 30; ++i) ASSERT_TRUE(d.tick(scenario::DriverInput{0.0, 0.5, 0.0})) << d.failure();
+    d.closeOutputs();
+  }
+  // The recording goes to the places as the drive did: the same telemetry.
+  const app::Recording r = app::readRecording(rec);
+  EXPECT_EQ(std::count_if(r.entries.begin(), r.entries.end(),
+                          [](const app::RecordedTick& e) { return e.kind == app::RecordedTick::Kind::Place; }),
+            static_cast<long>(spec.places.size()));
+  EXPECT_EQ(replayedTelemetry(spec, r, again), readFile(csv));
+}
+
+TEST(DriveSession, APlaceOffTheTerrainIsRefusedAndTheDriveGoesOn) {
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive.toml"));
+  spec.terrainFile = asset("terrain/curb.toml");  // a road that ends: x -50 .. 300, y -10 .. 10
+  spec.places.push_back({"the far side of the moon", 5000, 5000, 0});
+  app::DriveSession d(spec, {});
+  for (int i = 0; i < 30; ++i) ASSERT_TRUE(d.tick(personAt(i)));
+  const double t = d.time(), x = d.lastSample().com.x();
+  EXPECT_FALSE(d.goTo(0));
+  EXPECT_NE(d.placeNotice().find("cannot go to the far side of the moon: "), std::string::npos) << d.placeNotice();
+  EXPECT_NE(d.placeNotice().find("no ground under wheel"), std::string::npos) << d.placeNotice();
+  EXPECT_EQ(d.time(), t);
+  EXPECT_EQ(d.lastSample().com.x(), x);
+  ASSERT_TRUE(d.tick(personAt(30)));
 }

@@ -73,7 +73,9 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
     const double advanced = session.time() - sim0;
     realTime.add(period, advanced > 0 ? advanced : 0.0);
     const std::string card = opt.quitAtEnd && session.finished() ? courseVerdictLine(session) : "";
-    drawing.publish(session.view(), session.hud(realTime.factor(), physics, card.empty() ? handler.message() : card));
+    vehicle::HudInfo hud = session.hud(realTime.factor(), physics, card.empty() ? handler.message() : card);
+    hud.menu = handler.menuText();
+    drawing.publish(session.view(), hud);
     const bool overrun = clock.endTick();
     std::lock_guard<std::mutex> lock(statsMutex);
     stats.tick(period, physics, overrun);

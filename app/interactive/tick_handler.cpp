@@ -25,7 +25,8 @@ constexpr double kMessageSeconds = 4.0;
 }  // namespace
 
 TickHandler::TickHandler(DriveSession& session, const InteractiveOptions& options)
-    : session_(session), options_(options), carSteering_(session.simulation().carSteering()) {
+    : session_(session), options_(options), carSteering_(session.simulation().carSteering()),
+      menu_(session.spec().places) {
   if (options_.driver == DriverSource::Person) {
     input::InputOptions io;
     if (!options_.mappingDir.empty()) io.mappingDir = options_.mappingDir;
@@ -58,6 +59,18 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
   if (devices_) {
     const input::Controls c = devices_->poll(session_.spec().tick);
     out.quit |= c.quit;
+    if (c.menu && !menu_.isOpen()) {
+      menu_.open();
+    } else if (c.menu) {
+      menu_.close();
+    } else if (menu_.isOpen()) {
+      // The menu holds the drive; its keys may steer and pedal otherwise.
+      if (c.menuUp) menu_.up();
+      if (c.menuDown) menu_.down();
+      if (c.menuSelect) out.quit |= choose(menu_.select());
+      return out;
+    }
+    if (menu_.isOpen()) return out;
     if (c.pause) paused_ = !paused_;
     step = c.singleStep;
     out.view.cameraSwitches = c.camera ? 1 : 0;
@@ -91,6 +104,28 @@ TickOutcome TickHandler::handle(const render::WindowEvents& we) {
   }
   return out;
 }
+
+// What a menu choice does; true to quit.
+bool TickHandler::choose(const MenuChoice& choice) {
+  switch (choice.kind) {
+    case MenuChoice::Kind::Resume: break;
+    case MenuChoice::Kind::Restart:
+      session_.restart();
+      say("back to the start (telemetry segment " + std::to_string(session_.segment()) + ")");
+      break;
+    case MenuChoice::Kind::GoTo:
+      if (session_.goTo(choice.place))
+        say("at " + session_.spec().places[choice.place].name + " (telemetry segment " +
+            std::to_string(session_.segment()) + ")");
+      else
+        say(session_.placeNotice());
+      break;
+    case MenuChoice::Kind::Quit: return true;
+  }
+  return false;
+}
+
+std::string TickHandler::menuText() const { return menu_.isOpen() ? menu_.text() : ""; }
 
 // The scripted driver, or the next line of the replay (its events first).
 void TickHandler::advance() {

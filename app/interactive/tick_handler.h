@@ -11,6 +11,7 @@
 #include "interactive/draw_thread.h"
 #include "render/window.h"
 #include "session/drive_session.h"
+#include "session/pause_menu.h"
 
 namespace bdfcar::app {
 
@@ -27,19 +28,23 @@ class TickHandler {
   TickOutcome handle(const render::WindowEvents& events);
   // The HUD's message line: a command's effect, a divergence absorbed, pause.
   std::string message() const;
-  bool paused() const { return paused_; }
+  bool paused() const { return paused_ || menu_.isOpen(); }
+  // The pause menu's text while it is open, "" otherwise (the HUD's menu panel).
+  std::string menuText() const;
   void setSteeringFeel();
 
  private:
   void say(const std::string& text);
   void advance();
   void toggleRecording();
+  bool choose(const MenuChoice& choice);
 
   DriveSession& session_;
   const InteractiveOptions& options_;
   const scenario::CarSteering carSteering_;  // for speed-sensitive steering and a wheel's own angle
   std::unique_ptr<input::InputSystem> devices_;
   bool paused_ = false;
+  PauseMenu menu_;
   size_t replayCursor_ = 0;
   std::string message_;
   long messageTicks_ = 0;          // ticks the message stays on screen

@@ -26,13 +26,30 @@ DriveSession::~DriveSession() = default;
 
 void DriveSession::restart() {
   run_->restart();
-  if (recorder_) recorder_->record({RecordedTick::Kind::Reset, {}});
+  if (recorder_) recorder_->record({RecordedTick::Kind::Reset, {}, -1});
   sample_ = sim_->sample();
 }
 
 bool DriveSession::rewind() {
   if (!run_->rewind()) return false;
-  if (recorder_) recorder_->record({RecordedTick::Kind::Rewind, {}});
+  if (recorder_) recorder_->record({RecordedTick::Kind::Rewind, {}, -1});
+  sample_ = sim_->sample();
+  return true;
+}
+
+bool DriveSession::goTo(int place) {
+  const std::vector<scenario::Place>& places = spec().places;
+  if (place < 0 || place >= static_cast<int>(places.size())) {
+    notice_ = "no place " + std::to_string(place) + " in " + spec().sourceFile;
+    return false;
+  }
+  if (!run_->restartAt(places[place])) {
+    notice_ = run_->notice();
+    return false;
+  }
+  place_ = place;
+  notice_.clear();
+  if (recorder_) recorder_->record({RecordedTick::Kind::Place, {}, place});
   sample_ = sim_->sample();
   return true;
 }
@@ -41,6 +58,8 @@ void DriveSession::startRecording(const std::string& path) {
   if (recorder_) stopRecording();
   auto recorder = std::make_unique<InputRecorder>(path, spec());  // throws before anything changes
   run_->restart();
+  // A recording replays from the scenario's start: it begins by going where the drive restarted.
+  if (place_ >= 0) recorder->record({RecordedTick::Kind::Place, {}, place_});
   options_.recordPath = path;
   recorder_ = std::move(recorder);
   sample_ = sim_->sample();
@@ -60,7 +79,7 @@ void DriveSession::closeOutputs() {
 }
 
 bool DriveSession::tick(const std::optional<scenario::DriverInput>& input) {
-  if (recorder_ && input && !failed() && !finished()) recorder_->record({RecordedTick::Kind::Input, *input});
+  if (recorder_ && input && !failed() && !finished()) recorder_->record({RecordedTick::Kind::Input, *input, -1});
   const bool ok = run_->tick(input);
   sample_ = run_->lastSample();
   return ok;
@@ -71,6 +90,7 @@ bool DriveSession::replay(const RecordedTick& e) {
     case RecordedTick::Kind::Input: return tick(e.input);
     case RecordedTick::Kind::Reset: restart(); return true;
     case RecordedTick::Kind::Rewind: rewind(); return true;
+    case RecordedTick::Kind::Place: return goTo(e.place);
   }
   return true;
 }

@@ -38,6 +38,13 @@ class DriveSession {
   void restart();
   // One snapshot (0.5 s) back; recorded. False when there is nothing to go back to.
   bool rewind();
+  // Restarts the drive at the scenario's place `place` (ScenarioSpec::places:
+  // the menu's "go to"), recorded as an event; restart() then comes back
+  // there. False when there is no such place or the car cannot start there
+  // (placeNotice() says why; the drive goes on as it was).
+  bool goTo(int place);
+  const std::string& placeNotice() const { return notice_; }
+  int place() const { return place_; }  // -1: the scenario's [start]
   // Restarts the scenario recording every tick's input to `path` (a new file:
   // a recording replays from the scenario's start).
   void startRecording(const std::string& path);
@@ -88,6 +95,8 @@ class DriveSession {
   std::unique_ptr<scenario::Simulation> sim_;
   std::unique_ptr<scenario::Run> run_;
   std::unique_ptr<InputRecorder> recorder_;
+  int place_ = -1;          // where the drive restarted last (-1: the scenario's [start])
+  std::string notice_;      // why the last goTo failed
   vehicle::VehicleSample sample_;
 };
 

@@ -54,6 +54,7 @@ void InputRecorder::record(const RecordedTick& e) {
       break;
     case RecordedTick::Kind::Reset: n = std::snprintf(line, sizeof line, "reset\n"); break;
     case RecordedTick::Kind::Rewind: n = std::snprintf(line, sizeof line, "rewind\n"); break;
+    case RecordedTick::Kind::Place: n = std::snprintf(line, sizeof line, "place %d\n", e.place); break;
   }
   file_.append(line, static_cast<std::size_t>(n));
 }
@@ -107,7 +108,13 @@ Recording readRecording(const std::string& path) {
       continue;
     }
     if (word == "reset" || word == "rewind") {
-      r.entries.push_back({word == "reset" ? RecordedTick::Kind::Reset : RecordedTick::Kind::Rewind, {}});
+      r.entries.push_back({word == "reset" ? RecordedTick::Kind::Reset : RecordedTick::Kind::Rewind, {}, -1});
+      continue;
+    }
+    if (word == "place") {
+      int index = -1;
+      if (!(s >> index) || index < 0 || index > 10000) fail("expected 'place N' (N: a place of the scenario, from 0)");
+      r.entries.push_back({RecordedTick::Kind::Place, {}, index});
       continue;
     }
     std::istringstream t(line);
@@ -115,7 +122,7 @@ Recording readRecording(const std::string& path) {
     std::vector<std::string> f;
     if (!(t >> tick) || tick != inputs)
       fail("expected 'tick steer throttle brake [handbrake clutch clutch_pedal shift]' with consecutive ticks "
-           "from 0, or an event (reset, rewind)");
+           "from 0, or an event (reset, rewind, place N)");
     for (std::string w; t >> w;) f.push_back(w);
     // Recordings made before the powertrain have the first three values only.
     if (f.size() != 3 && f.size() != 7)
@@ -140,7 +147,7 @@ Recording readRecording(const std::string& path) {
       d.clutchPedal = f[5] == "1";
       d.shift = std::stoi(f[6]);
     }
-    r.entries.push_back({RecordedTick::Kind::Input, d});
+    r.entries.push_back({RecordedTick::Kind::Input, d, -1});
     ++inputs;
   }
   if (inputs == 0) {

@@ -2,7 +2,8 @@
 // exact hexadecimal floating point, so that a replay feeds the simulation the
 // very same bits and reproduces the run (and its telemetry) bit for bit.
 // What the driver did besides steering is recorded as events on lines of
-// their own: `reset` (back to the start) and `rewind` (one snapshot back).
+// their own: `reset` (back to the start), `rewind` (one snapshot back) and
+// `place N` (the drive restarted at the scenario's place N, from the menu).
 // The header names the scenario and vehicle files with a hash of their
 // content and the tick, so that a replay against other data is refused
 // rather than silently different. Lines go out whole (scenario/row_file.h).
@@ -20,8 +21,9 @@ namespace bdfcar::app {
 
 // One line of a recording: a tick's input, or an event between ticks.
 struct RecordedTick {
-  enum class Kind { Input, Reset, Rewind } kind = Kind::Input;
+  enum class Kind { Input, Reset, Rewind, Place } kind = Kind::Input;
   scenario::DriverInput input;  // Kind::Input
+  int place = -1;               // Kind::Place: the index in the scenario's places
 };
 
 // FNV-1a (64 bits) of a file's content, as 16 hex digits ("" if unreadable).

@@ -177,6 +177,37 @@ void Run::restart() {
   startSegment();
 }
 
+bool Run::restartAt(const Place& place) {
+  if (!initial_) throw std::logic_error("Run::restartAt needs a restartable run");
+  const Snapshot before = snapshot();
+  restoreSnapshot(*initial_);  // every part of the run state as at the start
+  sim_.setStart(place.x, place.y, place.heading);
+  try {
+    equilibrium_ = sim_.prepare(nullptr);
+  } catch (const std::exception& e) {
+    // Back to where the drive was, with the old start.
+    const ScenarioSpec& spec = sim_.spec();
+    sim_.setStart(spec.startX, spec.startY, spec.startHeading);
+    restoreSnapshot(before);
+    notice_ = "cannot go to " + place.name + ": " + e.what();
+    return false;
+  }
+  steps_ = ticks_ = 0;
+  snapshots_.clear();
+  snapshotSinceReset_ = true;
+  rewoundTo_ = -1;
+  if (judge_) {
+    const auto& g = sim_.vehicle().spec.geometry;
+    judge_.emplace(*sim_.course(), g.length, vehicleWidth(sim_.vehicle()), g.bodyOffset);
+  }
+  if (laps_) laps_.emplace(sim_.spec().laps.line, sim_.spec().laps.width, sim_.spec().laps.sectors);
+  if (config_.sample) sample_ = sim_.sample();
+  initial_ = snapshot();
+  notice_.clear();
+  startSegment();
+  return true;
+}
+
 void Run::closeOutputs() {
   if (telemetry_) telemetry_->close();
 }

@@ -89,6 +89,12 @@ class Run {
   bool tick(const std::optional<DriverInput>& input);
   // Back to the start of the manoeuvre (restartable runs: an assignment).
   void restart();
+  // The manoeuvre again from one of the scene's places (restartable runs):
+  // the car assembled, settled and started there as at the scenario's start,
+  // a new telemetry segment; restart() comes back here from then on. False
+  // (and the run as it was, notice() saying why) when the car cannot start
+  // there (off the terrain, against a wall).
+  bool restartAt(const Place& place);
   // One snapshot (snapshotInterval) back, rewindable runs; false when there
   // is none. A rewind soon after another (within kRewindChain intervals of
   // driving since where that one landed) goes on from there, one more

@@ -453,6 +453,17 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     s.laps = {true, std::move(line.points), line.width, static_cast<int>(l->integerIn("sectors", 1, 20, 3))};
     l->finish();
   }
+  for (Table& p : root.optionalTables("places")) {
+    Place place;
+    place.name = p.string("name");
+    const std::vector<double> at = p.numbers("position", Dimension::Length, kPosition);
+    p.require(at.size() == 2, "position", "[x, y] (m)");
+    place.x = at[0];
+    place.y = at[1];
+    place.heading = p.number("heading", Dimension::Angle, kHeading, 0.0);
+    p.finish();
+    s.places.push_back(place);
+  }
   if (auto c = root.optionalTable("check")) s.check = readCheck(*c);
   if (auto m = root.optionalTable("metrics")) {
     const std::string test = m->string("test");

@@ -42,6 +42,13 @@ struct SignalSpec {
   bool asDriverCommand = false;               // steering: through the steering system, once a tick
 };
 
+// A named start of the scene ([[places]]): where a drive can go from the
+// menu (the hill, the skid pad), the car at rest there as at the start.
+struct Place {
+  std::string name;
+  double x = 0, y = 0, heading = 0;  // m, m, rad
+};
+
 struct SpeedControlSpec {
   bool enabled = false;
   SpeedProfile profile;        // target (m/s), its ramp, when the hold acts (speed_controller.h)
@@ -152,6 +159,7 @@ struct ScenarioSpec {
   CourseSpec course;
   PathFollowerSpec pathFollower;
   LapTimingSpec laps;
+  std::vector<Place> places;
   CheckSpec check;
   StandardTest standardTest = StandardTest::None;
 };

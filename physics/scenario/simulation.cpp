@@ -86,7 +86,10 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       brake_(makeSignal(world_->spec.brake)),
       rack_(world_->vehicle.layout.rackAxisSign * -world_->vehicle.spec.steering.rackTravelFull, *steering_,
             state_.rack),
-      steeringLimits_(steeringLimits(world_->vehicle.spec.steering)) {
+      steeringLimits_(steeringLimits(world_->vehicle.spec.steering)),
+      startX_(world_->spec.startX),
+      startY_(world_->spec.startY),
+      startHeading_(world_->spec.startHeading) {
   const ScenarioSpec& spec = world_->spec;
   const vehicle::Vehicle& veh = world_->vehicle;
   rungs_.push_back(makeRung(veh));
@@ -182,8 +185,8 @@ PathOffset Simulation::pathOffset(const vehicle::Vehicle& veh) const {
 
 Simulation::StartPose Simulation::startPose() const {
   const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
-  const Eigen::Matrix3d yaw = mb::rotZ(spec().startHeading);
-  const Eigen::Vector3d start(spec().startX, spec().startY, 0.0);
+  const Eigen::Matrix3d yaw = mb::rotZ(startHeading_);
+  const Eigen::Vector3d start(startX_, startY_, 0.0);
   auto groundAt = [&](const Eigen::Vector3d& p, int w) {
     const terrain::Hit g = world_->terrain->castRay(Eigen::Vector3d(p.x(), p.y(), 1e3), down, 2e3);
     if (!g.hit) {
@@ -254,9 +257,9 @@ vehicle::EquilibriumReport Simulation::prepare(const std::atomic<bool>* stop) {
       throw PrepareError(spec().sourceFile + ": the ground under the start slopes by " +
                          std::to_string(slope * 180 / M_PI) +
                          " deg; [fidelity] suspension = planar needs level ground (use kinematic or linkage)");
-    q(base.qIndex) = spec().startX;
-    q(base.qIndex + 1) = spec().startY;
-    q(base.qIndex + 2) = spec().startHeading;
+    q(base.qIndex) = startX_;
+    q(base.qIndex + 1) = startY_;
+    q(base.qIndex + 2) = startHeading_;
   } else {
     q.segment<3>(ch.qIndex) = pose.origin;
     const Eigen::Quaterniond yaw(pose.rotation);

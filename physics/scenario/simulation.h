@@ -228,6 +228,9 @@ class Simulation {
   DriverInput lastInput() const { return state_.input; }
   // The car's steering as a person's controls need it (the linkage's).
   CarSteering carSteering() const;
+  // Where prepare() puts the car (the scenario's [start] until set): a
+  // drive going to one of the scene's places sets it, then prepares again.
+  void setStart(double x, double y, double heading) { startX_ = x, startY_ = y, startHeading_ = heading; }
   // The speed the scenario's speed hold keeps now (m/s), or -1 when none
   // does: it drives the car then, whatever the throttle input says.
   double speedHoldTarget() const { return speed_ && speed_->active(time()) ? speed_->target(time()) : -1.0; }
@@ -310,6 +313,7 @@ class Simulation {
   RackSignal rack_;
   SteeringLimits steeringLimits_;
   bool prepared_ = false;
+  double startX_ = 0, startY_ = 0, startHeading_ = 0;  // the start pose (setStart)
   // Time with no ground under any wheel (RunState::airborne): off the edge of
   // a bounded terrain the car would fall for ever, so the run stops with a
   // message instead. A jump off a ramp lasts well under kMaxAirborne.

@@ -88,6 +88,7 @@ struct HudInfo {
   std::string verdict;
   std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)
   std::string message;              // status line (paused, recording, diverged, ...)
+  std::string menu;                 // the pause menu's lines while it is open ("" closed)
 };
 
 }  // namespace bdfcar::vehicle

@@ -35,8 +35,9 @@ struct SpeedSensitiveSteering {
 };
 
 // Edge-triggered commands: true in the one tick in which the button went down.
-enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit, Rewind };
-inline constexpr int kActionCount = 10;
+enum class Action { GearUp, GearDown, Reset, Pause, SingleStep, Camera, View, Record, Quit, Rewind, Menu, MenuUp,
+                    MenuDown, MenuSelect };
+inline constexpr int kActionCount = 14;
 
 struct Controls {
   // Analog, from the active device (the highest-ranked connected one, else the keyboard).
@@ -64,6 +65,9 @@ struct Controls {
   bool record = false;
   bool quit = false;
   bool rewind = false;    // one snapshot (0.5 s) back in the drive
+  // The pause menu: open / close it, move through it, choose (acted on
+  // only while it is open: the keys may steer or pedal otherwise).
+  bool menu = false, menuUp = false, menuDown = false, menuSelect = false;
 
   DeviceKind source = DeviceKind::Keyboard;  // the device the analog values came from
 };
