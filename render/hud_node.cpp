@@ -105,6 +105,14 @@ HudNode::HudNode() : camera_(new osg::Camera) {
   layout(1280, 720);
 }
 
+void HudNode::setTrackMap(const std::vector<Eigen::Vector2d>& line) {
+  map_ = std::make_unique<TrackMap>(line);
+  camera_->addChild(map_->node());
+  const int w = width_, h = height_;
+  width_ = 0;  // its panel joins the others
+  layout(w, h);
+}
+
 // A dynamic white text block with the HUD font.
 osg::ref_ptr<osgText::Text> HudNode::makeText(osgText::Text::AlignmentType align) {
   osg::ref_ptr<osgText::Text> t = new osgText::Text;
@@ -144,6 +152,7 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   }
   setIfChanged(*figures_, fig);
   gg_->update(hud.time, hud.longitudinalAcceleration, hud.lateralAcceleration);
+  if (map_) map_->update(hud.mapX, hud.mapY, hud.mapYaw);
   const int figureLines = hud.powertrain ? kFigureLines + 1 : kFigureLines;
   if (figureLines != figureLines_) {
     figureLines_ = figureLines;
@@ -251,6 +260,12 @@ void HudNode::layout(int width, int height) {
   const float ggLeft = margin, ggBottom = 2 * margin + 2 * pad + lineHeight;
   addRect(*v, ggLeft, ggBottom, ggLeft + 2 * ggHalf, ggBottom + 2 * ggHalf);
   gg_->layout(ggLeft + ggHalf, ggBottom + ggHalf, ggRadius, 0.7f * size);
+  if (map_) {
+    // The track map bottom right, as tall as the g-g panel.
+    const float side = 2 * ggHalf, x0 = width - margin - side;
+    addRect(*v, x0, ggBottom, x0 + side, ggBottom + side);
+    map_->layout(x0, ggBottom, side);
+  }
   useBilinearGlyphs(*font_);  // glyphs at a new resolution may open a new texture
   panels_->setVertexArray(v.get());
   static_cast<osg::DrawArrays*>(panels_->getPrimitiveSet(0))->setCount(static_cast<GLsizei>(v->size()));

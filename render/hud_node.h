@@ -11,6 +11,7 @@
 #include <string>
 
 #include "render/gg_diagram.h"
+#include "render/track_map.h"
 #include "render/scene.h"
 #include "vehicle/vehicle_view.h"
 
@@ -24,6 +25,8 @@ class HudNode {
   void update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay body);
   // Places panels and sizes text for a viewport of width x height pixels.
   void layout(int width, int height);
+  // A map of this closed centre line, bottom right, with the car on it.
+  void setTrackMap(const std::vector<Eigen::Vector2d>& line);
 
  private:
   osg::ref_ptr<osgText::Text> makeText(osgText::Text::AlignmentType align);
@@ -35,6 +38,7 @@ class HudNode {
   osg::ref_ptr<osgText::Text> figures_, course_, message_, menu_;
   osg::ref_ptr<osg::Geometry> panels_;
   std::unique_ptr<GgDiagram> gg_;  // built once the font is loaded
+  std::unique_ptr<TrackMap> map_;  // a timed circuit's
   int width_ = 0, height_ = 0;
   bool showMessage_ = false;
   int courseLines_ = 2;

@@ -58,6 +58,15 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   chassis->addChild(body.node);
   chassis->addChild(body.frame);  // beside the body: it shows while the body is hidden
   world->addChild(chassis);
+  if (!cfg.trackMap.empty()) {  // a timed circuit: the best lap's ghost
+    ghostBody = makeBodyNode(g, cfg.assetRoot);
+    applyBodyDisplay(ghostBody, BodyDisplay::Translucent);
+    if (ghostBody.frame) ghostBody.frame->setNodeMask(0u);
+    ghost = new osg::MatrixTransform;
+    ghost->addChild(ghostBody.node);
+    ghost->setNodeMask(0u);  // until there is a best lap
+    world->addChild(ghost);
+  }
   osg::ref_ptr<osg::Node> wheel = makeWheelNode(g.wheelRadius, g.wheelWidth);
   for (auto& w : wheels) {
     w = new osg::MatrixTransform;
@@ -66,6 +75,7 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   }
   world->addChild(links.node());
   if (cfg.hud) root->addChild(hud.node());
+  if (!cfg.trackMap.empty()) hud.setTrackMap(cfg.trackMap);
 
   // Until the first update: car at rest at the origin, chassis point 0.51 m above ground.
   vehicle::VehicleView rest;
@@ -81,6 +91,10 @@ void Scene::Impl::update(const vehicle::VehicleView& view, const vehicle::HudInf
   chassisPose = view.chassis;
   chase.update(headingOf(view.chassis), view.time);
   chassis->setMatrix(poseMatrix(view.chassis));
+  if (ghost) {
+    ghost->setNodeMask(view.ghost ? ~0u : 0u);
+    if (view.ghost) ghost->setMatrix(poseMatrix(view.ghostChassis));
+  }
   for (int i = 0; i < 4; ++i) wheels[i]->setMatrix(poseMatrix(view.wheels[i].pose));
   links.update(view.links);
   // The shadow stays flat on the ground under the body, turned with the heading only.

@@ -27,6 +27,7 @@ struct SceneConfig {
                                                  // assetRoot, the working directory or the source tree)
   std::string assetRoot;                         // optional base folder of relative asset paths
   bool hud = true;
+  std::vector<Eigen::Vector2d> trackMap;         // a timed circuit's centre line: the HUD's map (empty: none)
 };
 
 class Scene {

@@ -36,6 +36,9 @@ struct Scene::Impl {
   osg::ref_ptr<osg::MatrixTransform> sky, chassis, shadow;
   std::array<osg::ref_ptr<osg::MatrixTransform>, 4> wheels;
   BodyNode body;
+  // The best lap's ghost: the body again, translucent, where the view puts it.
+  osg::ref_ptr<osg::MatrixTransform> ghost;
+  BodyNode ghostBody;
   osg::ref_ptr<osg::Group> cones;          // the course's, knocked over as the HUD reports them
   LinkPool links;
   HudNode hud;

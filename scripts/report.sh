@@ -256,6 +256,14 @@ bench_table() {
   fi
   echo '```'
   echo
+  echo "The car's sound (audio/, issue 30) is rendered on SDL's audio thread, not the tick: the tick only"
+  echo "publishes a SoundState through a triple buffer. One tick's worth (480 samples at 48 kHz) of the"
+  echo "synthesiser, and the publish (\`build/tests/bench_audio\`, median of $repeats repetitions):"
+  echo
+  echo "| benchmark | real time (median) | |"
+  echo "|---|---|---|"
+  bench_table bench_audio
+  echo
 } >> "$out"
 
 {

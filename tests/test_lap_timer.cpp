@@ -137,3 +137,48 @@ TEST(LapTimer, ACopyContinuesAsTheOriginal) {
   for (size_t i = 0; i < a.laps().size(); ++i) EXPECT_EQ(a.laps()[i].time, b.laps()[i].time);
   EXPECT_EQ(a.distance(), b.distance());
 }
+
+// The ghost: on lap 2, at each time into the lap, the best lap's car where
+// it was at that time into its lap (lap 1 at v1 from a standing start at s0:
+// s0 + v1 tau along the line), whatever speed lap 2 goes at; none on the
+// out lap, none once the lap is slower than the whole best lap.
+TEST(LapTimer, TheGhostIsTheBestLapAtTheSameTimeIntoTheLap) {
+  LapTimer timer(polygon(), kWidth, 3);
+  const double v1 = 20.0, v2 = 17.0, s0 = 5.0;
+  auto heading = [](double s) {
+    const Eigen::Vector2d d = along(s + 1e-6) - along(s);
+    return std::atan2(d.y(), d.x());
+  };
+  EXPECT_FALSE(timer.ghost(kT0).has_value());
+  const double tLap2 = kT0 + (kLength - s0) / v1;
+  int checked = 0;
+  double last = kT0;
+  for (int k = 0;; ++k) {
+    const double t = kT0 + k * kDt;
+    const double s = t < tLap2 ? s0 + (t - kT0) * v1 : kLength + (t - tLap2) * v2;
+    if (s > 2 * kLength - 1.0) break;
+    timer.update(t, along(s), heading(s));
+    last = t;
+    if (timer.lap() < 2) {
+      EXPECT_FALSE(timer.ghost(t).has_value());
+      continue;
+    }
+    const double tau = t - tLap2;  // into lap 2 (the crossing at constant speed: exact)
+    const std::optional<scenario::GhostPose> g = timer.ghost(t);
+    if (tau > (kLength - s0) / v1 - 0.2) continue;  // the best lap's end
+    ASSERT_TRUE(g.has_value()) << "tau " << tau;
+    // The ghost's points, kGhostStep apart (c = 2 m at v1), are joined by
+    // straight lines: across a chord the line turns by at most c / R, so the
+    // chord strays from it by less than c^2 / (2 R) = 2 cm.
+    const Eigen::Vector2d expected = along(s0 + v1 * tau);
+    const double stray = std::pow(v1 * LapTimer::kGhostStep, 2) / (2 * kRadius);
+    EXPECT_NEAR(g->x, expected.x(), stray) << "tau " << tau;
+    EXPECT_NEAR(g->y, expected.y(), stray) << "tau " << tau;
+    EXPECT_NEAR(std::remainder(g->yaw - heading(s0 + v1 * tau), 2 * M_PI), 0.0, 0.02) << "tau " << tau;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+  // Lap 2 (slower) went on past the best lap's time: no ghost then.
+  ASSERT_GT(last - tLap2, (kLength - s0) / v1);
+  EXPECT_FALSE(timer.ghost(last).has_value());
+}

@@ -97,7 +97,19 @@ bool DriveSession::replay(const RecordedTick& e) {
 
 vehicle::VehicleView DriveSession::view() {
   sample_ = sim_->sample();
-  return sim_->view();
+  vehicle::VehicleView v = sim_->view();
+  if (const scenario::LapTimer* l = run_->laps()) {
+    if (const std::optional<scenario::GhostPose> g = l->ghost(sample_.t)) {
+      // The ghost's chassis frame where the car's is relative to its centre
+      // of mass, turned to the ghost's heading, level, at the car's height.
+      const Eigen::Vector3d offset = sample_.chassisRotation.transpose() * (sample_.chassisOrigin - sample_.com);
+      const Eigen::Quaterniond yaw(Eigen::AngleAxisd(g->yaw, Eigen::Vector3d::UnitZ()));
+      v.ghost = true;
+      v.ghostChassis.rotation = yaw;
+      v.ghostChassis.position = Eigen::Vector3d(g->x, g->y, sample_.com.z()) + yaw * offset;
+    }
+  }
+  return v;
 }
 
 vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, const std::string& message) {
@@ -152,6 +164,9 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
     h.lapDelta = l->delta(sample_.t);
     h.lapDeltaShown = std::isfinite(h.lapDelta);
   }
+  h.mapX = sample_.com.x();
+  h.mapY = sample_.com.y();
+  h.mapYaw = sample_.yaw;
   h.message = failed() ? failure() : message;
   return h;
 }

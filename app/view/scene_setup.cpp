@@ -18,6 +18,7 @@ render::SceneConfig sceneConfigFor(const scenario::Simulation& sim, bool hud) {
   cfg.geometry = sim.vehicle().spec.geometry;
   cfg.assetRoot = BDFCAR_ASSET_DIR;
   cfg.hud = hud;
+  if (spec.laps.enabled) cfg.trackMap = spec.laps.line;
   return cfg;
 }
 

@@ -138,6 +138,7 @@ void LapTimer::crossStart(double at) {
     if (r.valid && (best_ < 0 || r.time < laps_[best_].time)) {
       best_ = static_cast<int>(laps_.size()) - 1;
       bestProfile_ = profile_;
+      bestPath_ = std::make_shared<const std::vector<GhostPose>>(path_);
     }
   }
   ++lap_;
@@ -147,19 +148,34 @@ void LapTimer::crossStart(double at) {
   splits_.clear();
   valid_ = true;
   profile_.clear();
+  path_.clear();
 }
 
-void LapTimer::update(double t, const Eigen::Vector2d& com) {
+void LapTimer::update(double t, const Eigen::Vector2d& com, double yaw) {
   double s = 0, off = 0;
   project(com, s, off);
   offset_ = off;
+  // The ghost's path: the pose at each kGhostStep of lap time, interpolated
+  // between this sample and the last (heading the short way round).
+  auto recordPath = [&](double until) {
+    if (!running_) return;
+    for (double at = lapStart_ + path_.size() * kGhostStep; at <= until; at = lapStart_ + path_.size() * kGhostStep) {
+      const double u = t > t_ ? std::clamp((at - t_) / (t - t_), 0.0, 1.0) : 1.0;
+      const double turn = std::remainder(yaw - lastYaw_, 2 * M_PI);
+      path_.push_back({lastCom_.x() + u * (com.x() - lastCom_.x()), lastCom_.y() + u * (com.y() - lastCom_.y()),
+                       lastYaw_ + u * turn});
+    }
+  };
   if (!started_) {
     started_ = true;
     s_ = s;
     t_ = t;
+    lastCom_ = com;
+    lastYaw_ = yaw;
     if (s < kStandingStart) {  // on the grid: a standing start, timed from here
       crossStart(t);
       recordProfile(0.0, s, t, t);
+      recordPath(t);
     }
     return;
   }
@@ -170,9 +186,13 @@ void LapTimer::update(double t, const Eigen::Vector2d& com) {
   const double from = s_, to = s_ + ds, t0 = t_;
   auto timeAt = [&](double x) { return t0 + (ds != 0.0 ? (x - from) / ds : 0.0) * (t - t0); };
   if (to >= L) {  // forward over the start line
-    if (running_) recordProfile(from, L, t0, timeAt(L));
+    if (running_) {
+      recordProfile(from, L, t0, timeAt(L));
+      recordPath(timeAt(L));
+    }
     crossStart(timeAt(L));
     recordProfile(0.0, to - L, timeAt(L), t);
+    recordPath(t);
   } else if (to < 0.0) {  // back over it: the lap under way is abandoned
     running_ = false;
   } else if (running_) {
@@ -185,10 +205,25 @@ void LapTimer::update(double t, const Eigen::Vector2d& com) {
       ++sectorsDone_;
     }
     if (ds > 0) recordProfile(from, to, t0, t);
+    recordPath(t);
   }
   if (width_ > 0 && std::abs(off) > 0.5 * width_ + kCutMargin) valid_ = false;
   s_ = s;
   t_ = t;
+  lastCom_ = com;
+  lastYaw_ = yaw;
+}
+
+std::optional<GhostPose> LapTimer::ghost(double t) const {
+  if (!running_ || !bestPath_ || bestPath_->size() < 2) return std::nullopt;
+  const double x = (t - lapStart_) / kGhostStep;
+  if (x < 0) return std::nullopt;
+  const size_t i = static_cast<size_t>(x);
+  if (i + 1 >= bestPath_->size()) return std::nullopt;
+  const GhostPose& a = (*bestPath_)[i];
+  const GhostPose& b = (*bestPath_)[i + 1];
+  const double u = x - static_cast<double>(i);
+  return GhostPose{a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.yaw + u * std::remainder(b.yaw - a.yaw, 2 * M_PI)};
 }
 
 double LapTimer::delta(double t) const {

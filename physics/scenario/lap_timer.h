@@ -12,12 +12,17 @@
 // more than kCutMargin beyond the road's edge (all four wheels off: a cut).
 // Driving back over the start line abandons the lap under way.
 //
+// The ghost: the best lap's path (the centre of mass and heading every
+// kGhostStep of lap time), for a car drawn where the best lap was at the
+// same time into the lap.
+//
 // A value type, copied into a run's snapshots: a rewind rewinds the timing
-// too. The track geometry is shared between the copies.
+// too. The track geometry and the best lap's path are shared between the copies.
 #pragma once
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,19 +46,29 @@ std::string lapsSummary(const std::vector<LapRecord>& laps);
 // not at all); throws OutputError.
 void writeLapFile(const std::string& path, const std::vector<LapRecord>& laps, int sectors);
 
+// Where the ghost is: the best lap's car at a time into the lap.
+struct GhostPose {
+  double x = 0, y = 0, yaw = 0;  // m, m, rad (world)
+};
+
 class LapTimer {
  public:
   static constexpr double kCutMargin = 1.0;  // m beyond the road's edge
   static constexpr double kProfileStep = 5.0;  // m between the delta's samples
   static constexpr double kStandingStart = 20.0;  // m past the line: the first sample starts lap 1
+  static constexpr double kGhostStep = 0.1;       // s of lap time between the ghost's points
 
   // line: the centre line, closed (its last point joins its first), the
   // start line at its first point, driven in the order of its points;
   // width: the road's (0: unknown, no cut is judged); sectors >= 1.
   LapTimer(const std::vector<Eigen::Vector2d>& line, double width, int sectors);
 
-  // The car's centre of mass (world x, y) at time t; times increase.
-  void update(double t, const Eigen::Vector2d& com);
+  // The car's centre of mass (world x, y) and heading at time t; times increase.
+  void update(double t, const Eigen::Vector2d& com, double yaw = 0.0);
+  // The best lap's car at the same time into the lap under way as t (none
+  // without a best lap, on the out lap, or once the lap under way is slower
+  // than the whole best lap).
+  std::optional<GhostPose> ghost(double t) const;
 
   int lap() const { return lap_; }  // the lap under way: 0 the out lap, then 1, 2, ...
   // Time into the lap under way at t (s); negative on the out lap.
@@ -89,6 +104,8 @@ class LapTimer {
   int sectorCount_ = 1;
   int segment_ = -1;  // the segment the car was nearest last time
   double s_ = 0, offset_ = 0, t_ = 0;
+  Eigen::Vector2d lastCom_ = Eigen::Vector2d::Zero();  // the last sample's, for the ghost's path
+  double lastYaw_ = 0;
   bool started_ = false;  // a sample seen
   int lap_ = 0;
   bool running_ = false;  // a timed lap under way (false on the out lap and after driving back over the line)
@@ -97,6 +114,8 @@ class LapTimer {
   std::vector<double> splits_;
   bool valid_ = true;
   std::vector<double> profile_, bestProfile_;  // lap time at each kProfileStep of distance
+  std::vector<GhostPose> path_;                // the lap under way's, every kGhostStep from its start
+  std::shared_ptr<const std::vector<GhostPose>> bestPath_;
   std::vector<LapRecord> laps_;
   int best_ = -1;
 };

@@ -54,7 +54,7 @@ TelemetryInputs Run::rowInputs() const {
 
 void Run::record() {
   if (!config_.sample) return;
-  if (laps_) laps_->update(sample_.t, sample_.com.head<2>());  // before the row, which shows the lap
+  if (laps_) laps_->update(sample_.t, sample_.com.head<2>(), sample_.yaw);  // before the row, which shows the lap
   TelemetryInputs ti = rowInputs();
   ti.switchJump = sim_.takeSwitchJump();
   writeRow(ti);

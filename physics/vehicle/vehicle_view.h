@@ -50,6 +50,10 @@ struct VehicleView {
   BodyPose chassis;                 // chassis reference frame (x forward, y left, z up)
   std::array<WheelView, 4> wheels;
   std::vector<LinkSegment> links;   // suspension members, world coordinates
+  // The best lap's car at the same time into the lap (a timed circuit's
+  // ghost, drawn translucent): its chassis frame, when there is one.
+  bool ghost = false;
+  BodyPose ghostChassis;
 };
 
 // Figures for the heads-up display.
@@ -89,6 +93,7 @@ struct HudInfo {
   std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)
   std::string message;              // status line (paused, recording, diverged, ...)
   std::string menu;                 // the pause menu's lines while it is open ("" closed)
+  double mapX = 0, mapY = 0, mapYaw = 0;  // the car on the track map: centre of mass (world, m), heading (rad)
 };
 
 }  // namespace bdfcar::vehicle
