@@ -48,6 +48,12 @@ void CarSynth::render(const SoundState& s, float* out, int frames) {
     thumpFrequency_ = 65.0;
   }
   const double thumpDecay = std::exp(-1.0 / (kThumpSeconds * rate_));
+  // The harmonics' levels for the block (the load moves slowly against a
+  // 10 ms block): harmonic k of the firing frequency at 1 / k^p, brighter
+  // with load.
+  double level[kHarmonics + 1];
+  const double p = 1.7 - 0.8 * std::clamp(0.5 * (a.engineLoad + s.engineLoad), 0.0, 1.0);
+  for (int k = 1; k <= kHarmonics; ++k) level[k] = std::pow(static_cast<double>(k), -p);
   const double windPole = lowPass(900.0, rate_), rollPole = lowPass(180.0, rate_), combustionPole = lowPass(2500.0, rate_);
   for (int i = 0; i < frames; ++i) {
     const double u = frames > 1 ? static_cast<double>(i + 1) / frames : 1.0;
@@ -59,17 +65,21 @@ void CarSynth::render(const SoundState& s, float* out, int frames) {
     enginePhase_ -= std::floor(enginePhase_);
     double engine = 0;
     if (rpm > 0) {
-      // Brighter with load: harmonic k of the firing frequency at 1 / k^p.
-      const double p = 1.7 - 0.8 * load;
+      // sin(k x) for k = 1, 2, ... by the recurrence sin((k + 1) x) =
+      // 2 cos x sin(k x) - sin((k - 1) x): two trigonometric calls a sample.
+      const double x = kTwoPi * 2.0 * enginePhase_, twoCos = 2.0 * std::cos(x);
+      double previous = 0.0, current = std::sin(x);
       for (int k = 1; k <= kHarmonics; ++k) {
-        const double f = 2.0 * k * halfOrder;
-        if (f > 0.45 * rate_) break;  // no aliasing
-        engine += std::pow(static_cast<double>(k), -p) * std::sin(kTwoPi * 2.0 * k * enginePhase_);
+        if (2.0 * k * halfOrder > 0.45 * rate_) break;  // no aliasing
+        engine += level[k] * current;
+        const double next = twoCos * current - previous;
+        previous = current;
+        current = next;
       }
       engine += 0.25 * std::sin(kTwoPi * enginePhase_);  // the half order
       // Combustion noise, pulsed at the firing rate.
       combustionLow_ += combustionPole * (noise() - combustionLow_);
-      engine += 0.15 * (0.5 + 0.5 * std::sin(kTwoPi * 2.0 * enginePhase_)) * combustionLow_;
+      engine += 0.15 * (0.5 + 0.5 * std::sin(x)) * combustionLow_;
       engine *= (0.25 + 0.75 * load) * std::min(1.0, 0.4 + rpm / 6000.0);
     }
     // Tyres: squeal past the linear range, by load.
