@@ -69,7 +69,7 @@ void addSubdivided(Pick&& pick, const Corner& a, const Corner& b, const Corner& 
 // the texture is modulated by, and its layer. Surfaces laid on the grass
 // (pads, tracks) share its plane: a polygon offset and an earlier render bin
 // put them on top, paint and curbs on top of those.
-enum class Layer { Ground, Surface, Paint };
+enum class Layer { Ground, Surface, Paint, Beneath };
 struct Look {
   int texture;  // 0 none, 1 grass, 2 asphalt
   osg::Vec4 colour;
@@ -107,7 +107,8 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
   };
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& t = mesh.triangles[k];
-    const Look look = lookOf(k < mesh.materials.size() ? mesh.materials[k] : terrain::Material::Grass);
+    Look look = lookOf(k < mesh.materials.size() ? mesh.materials[k] : terrain::Material::Grass);
+    if (k >= mesh.firstBeneath) look.layer = Layer::Beneath;
     auto pick = [&](const osg::Vec3& centre) -> TriangleBuilder& {
       const std::array<int, 4> key{look.texture, static_cast<int>(look.layer),
                                    static_cast<int>(std::floor(centre.x() / kTile)),
@@ -118,11 +119,25 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
     };
     addSubdivided(pick, corner(t[0]), corner(t[1]), corner(t[2]), look.colour);
   }
+  // One table of cluster means for all tiles: their stand-ins meet edge to edge.
+  std::vector<const TriangleBuilder*> all;
+  for (const auto& [key, tb] : builders)
+    if (key[1] != static_cast<int>(Layer::Beneath)) all.push_back(&tb);
+  const std::vector<ClusterMeans> means = clusterMeans(all);
   osg::ref_ptr<osg::Group> tiles = new osg::Group;
-  const int bins[3] = {kBinGround, kBinAsphalt, kBinRoadPaint};
-  const float offsets[3] = {0.0f, -2.0f, -4.0f};
+  const int bins[4] = {kBinGround, kBinAsphalt, kBinRoadPaint, kBinBeneath};
+  const float offsets[4] = {0.0f, -2.0f, -4.0f, 0.0f};
   // One state per (texture, layer), shared by its tiles.
   std::map<std::pair<int, int>, osg::ref_ptr<osg::StateSet>> states;
+  // Stand-ins for dense tiles and for their neighbours of the same look.
+  auto levelsFor = [&](const std::array<int, 4>& key) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = builders.find({key[0], key[1], key[2] + dx, key[3] + dy});
+        if (it != builders.end() && isDense(it->second)) return true;
+      }
+    return false;
+  };
   for (auto& [key, tb] : builders) {
     const int texture = key[0], layer = key[1];
     osg::ref_ptr<osg::StateSet>& ss = states[{texture, layer}];
@@ -130,10 +145,11 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
       ss = new osg::StateSet;
       if (texture != 0)
         ss->setTextureAttributeAndModes(0, (texture == 1 ? grassTexture() : asphaltTexture()).get(), osg::StateAttribute::ON);
-      if (layer != 0) ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
+      if (offsets[layer] != 0.0f)
+        ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
       ss->setRenderBinDetails(bins[layer], "RenderBin");
     }
-    tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat));
+    tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, &means, levelsFor(key)));
   }
   return tiles;
 }

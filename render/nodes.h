@@ -15,8 +15,9 @@
 namespace bdfcar::render {
 
 // Opaque draw order, nearest things first so that llvmpipe's early depth test
-// rejects hidden ground pixels before shading them (fill rate is the cost).
-constexpr int kBinRoadPaint = 1, kBinAsphalt = 2, kBinGround = 3, kBinSky = 9;
+// rejects hidden ground pixels before shading them (fill rate is the cost);
+// what lies beneath the ground (terrain::TriangleMesh::firstBeneath) last.
+constexpr int kBinRoadPaint = 1, kBinAsphalt = 2, kBinGround = 3, kBinBeneath = 4, kBinSky = 9;
 
 // Colours shared by sky, fog and clear colour.
 inline const osg::Vec4 kSkyZenith(0.22f, 0.43f, 0.78f, 1.0f);
@@ -28,8 +29,9 @@ osg::ref_ptr<osg::MatrixTransform> makeSkyDome();
 // The terrain triangles with a grass texture (one texture repeat every 5 m).
 osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh);
 
-// Asphalt road along world x with edge lines and dashed lane lines, draped on the terrain.
-osg::ref_ptr<osg::Node> makeRoadNode(const terrain::RoadMarkings& road, const SurfaceSampler& ground);
+// The road's markings (data.road: along the terrain's x) draped on the
+// terrain: edge lines and dashed lane lines, on a plane over an asphalt ribbon.
+osg::ref_ptr<osg::Node> makeRoadNode(const terrain::TerrainData& data, const SurfaceSampler& ground);
 
 // Traffic cones standing on the terrain at the given ground points.
 // One transform per cone (course order) under `group`, for knockCone.

@@ -35,14 +35,14 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   root->addChild(sky);
   root->addChild(world);
   world->addChild(makeGroundNode(surface));
-  world->addChild(makeRoadNode(cfg.terrain.road, *ground));
+  world->addChild(makeRoadNode(cfg.terrain, *ground));
   // A ground's pieces paint their roads in their own frames.
   for (const terrain::GroundPiece& piece : cfg.terrain.pieces) {
     if (!piece.terrain.road.present) continue;
     const terrain::TriangleMesh local = terrainSurface(piece.terrain);
     osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(
         osg::Matrixd::rotate(piece.heading, osg::Vec3d(0, 0, 1)) * osg::Matrixd::translate(toOsg(piece.at)));
-    placed->addChild(makeRoadNode(piece.terrain.road, SurfaceSampler(local)));
+    placed->addChild(makeRoadNode(piece.terrain, SurfaceSampler(local)));
     world->addChild(placed);
   }
   if (cfg.course) {

@@ -18,23 +18,16 @@ namespace bdfcar::render {
 namespace {
 
 constexpr std::size_t kDenseTriangles = 20000;  // in one tile: above this it gets detail levels
-constexpr float kDenseTile = 25.0f;             // m, side of the parts a dense tile is cut into
+constexpr float kDenseTile = 12.5f;             // m, side of the parts a dense tile is cut into
 // Clustering cells of the stand-ins, m, finest first. A level is used beyond
 // kDistancePerCell cells from its part's bounding sphere: with 720 lines and a
 // 60 deg field of view a cell there spans about 3 pixels.
 constexpr std::array<float, 3> kCells{0.25f, 1.0f, 4.0f};
-constexpr float kDistancePerCell = 120.0f;
+constexpr float kDistancePerCell = 30.0f;
 // A level worth having removes at least this share of the finer one's triangles.
 constexpr double kMinReduction = 0.5;
 
 using Key = std::array<std::uint32_t, 12>;
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
-    for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
 struct TriangleHash {
   std::size_t operator()(const std::array<GLuint, 3>& t) const {
     return (std::size_t{t[0]} * 73856093u) ^ (std::size_t{t[1]} * 19349663u) ^ (std::size_t{t[2]} * 83492791u);
@@ -43,19 +36,41 @@ struct TriangleHash {
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 
+// The column of side `cell` over the xy plane that holds corner k. Columns,
+// not cubes: a surface crossing a cube's face in z (a washboard's ridges
+// about z = 0) would split into two layers of clusters and tear; a wall (a
+// curb's face) becomes a slope at the distances where clusters are used.
+Key columnKey(const osg::Vec3& p, float cell) {
+  auto index = [&](float x) { return static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(x / cell))); };
+  return Key{index(p.x()), index(p.y()), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+}
+
+// The cluster of corner k: its column and its colour.
+Key clusterKey(const TriangleBuilder& tb, std::size_t k, float cell) {
+  Key key = columnKey((*tb.v)[k], cell);
+  const osg::Vec4& c = (*tb.c)[k];
+  key[2] = bits(c.r());
+  key[3] = bits(c.g());
+  key[4] = bits(c.b());
+  key[5] = bits(c.a());
+  return key;
+}
+
 // Corners merged by key into indexed geometry. Welded (average false), a
 // merged vertex is its first corner. Clustered, it takes the mean position and
 // colour, the normalised mean normal, and texture coordinates computed from
 // the mean position; triangles repeated after the merge are drawn once.
 template <class KeyOf>
-osg::ref_ptr<osg::Geometry> mergeCorners(const TriangleBuilder& tb, KeyOf keyOf, bool average, float texelRepeat) {
+osg::ref_ptr<osg::Geometry> mergeCorners(const TriangleBuilder& tb, KeyOf keyOf, bool average, float texelRepeat,
+                                         const ClusterMeans* shared = nullptr) {
   const std::size_t corners = tb.v->size();
   const bool textured = tb.uv && tb.uv->size() == corners;
-  std::unordered_map<Key, GLuint, KeyHash> index;
+  std::unordered_map<Key, GLuint, ClusterKeyHash> index;
   std::vector<osg::Vec3> p, n;
   std::vector<osg::Vec4> c;
   std::vector<osg::Vec2> t;
   std::vector<int> count;
+  std::vector<Key> column;  // a cluster's column (its first corner's)
   std::vector<GLuint> of(corners);
   for (std::size_t k = 0; k < corners; ++k) {
     const auto [it, added] = index.try_emplace(keyOf(k), static_cast<GLuint>(p.size()));
@@ -65,6 +80,7 @@ osg::ref_ptr<osg::Geometry> mergeCorners(const TriangleBuilder& tb, KeyOf keyOf,
       c.emplace_back(0, 0, 0, 0);
       t.emplace_back(0, 0);
       count.push_back(0);
+      if (shared) column.push_back(columnKey((*tb.v)[k], shared->cell));
     }
     const GLuint m = it->second;
     of[k] = m;
@@ -81,8 +97,13 @@ osg::ref_ptr<osg::Geometry> mergeCorners(const TriangleBuilder& tb, KeyOf keyOf,
   osg::ref_ptr<osg::Vec2Array> uv = textured ? new osg::Vec2Array : nullptr;
   for (std::size_t m = 0; m < p.size(); ++m) {
     const float w = average ? 1.0f / float(count[m]) : 1.0f;
-    const osg::Vec3 at = p[m] * w;
+    osg::Vec3 at = p[m] * w;
     osg::Vec3 normal = n[m];
+    if (shared) {  // the column's mean over the whole ground: tiles and parts drawn apart meet edge to edge
+      const ClusterMeans::Sum& sum = shared->sums.at(column[m]);
+      at = sum.p / float(sum.count);
+      normal = sum.n;
+    }
     if (average && normal.normalize() == 0.0f) normal = osg::Vec3(0, 0, 1);
     v->push_back(at);
     normals->push_back(normal);
@@ -133,15 +154,17 @@ std::vector<TriangleBuilder> splitByCentroid(const TriangleBuilder& tb) {
 }
 
 // One part: its welded geometry near, then each stand-in that pays for itself.
-osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSet* state, float texelRepeat) {
+osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSet* state, float texelRepeat,
+                                       const std::vector<ClusterMeans>& means) {
   osg::ref_ptr<osg::Geometry> full = weldTriangles(part);
   osg::ref_ptr<osg::LOD> lod = new osg::LOD;
   const float radius = full->getBound().radius();
   std::size_t triangles = triangleCount(*full);
   osg::ref_ptr<osg::Geometry> drawn = full;
   float from = 0.0f;
-  for (float cell : kCells) {
-    osg::ref_ptr<osg::Geometry> coarse = clusterTriangles(part, cell, texelRepeat);
+  for (std::size_t level = 0; level < kCells.size(); ++level) {
+    const float cell = kCells[level];
+    osg::ref_ptr<osg::Geometry> coarse = clusterTriangles(part, cell, texelRepeat, &means[level]);
     if (double(triangleCount(*coarse)) > (1.0 - kMinReduction) * double(triangles)) continue;
     const float switchAt = radius + kDistancePerCell * cell;
     lod->addChild(geodeOf(drawn.get(), state), from, switchAt);
@@ -169,22 +192,41 @@ osg::ref_ptr<osg::Geometry> weldTriangles(const TriangleBuilder& tb) {
       false, 0.0f);
 }
 
-osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float cell, float texelRepeat) {
-  return mergeCorners(
-      tb,
-      [&](std::size_t k) {
-        const osg::Vec3& p = (*tb.v)[k];
-        const osg::Vec4& c = (*tb.c)[k];
-        auto index = [&](float x) { return static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(x / cell))); };
-        return Key{index(p.x()), index(p.y()), index(p.z()), bits(c.r()), bits(c.g()), bits(c.b()), bits(c.a()), 0, 0, 0, 0, 0};
-      },
-      true, texelRepeat);
+void ClusterMeans::add(const TriangleBuilder& tb) {
+  for (std::size_t k = 0; k < tb.v->size(); ++k) {
+    Sum& sum = sums[columnKey((*tb.v)[k], cell)];
+    sum.p += (*tb.v)[k];
+    sum.n += (*tb.n)[k];
+    ++sum.count;
+  }
 }
 
-osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat) {
-  if (tb.v->size() / 3 <= kDenseTriangles) return geodeOf(weldTriangles(tb).get(), state);
+std::vector<ClusterMeans> clusterMeans(const std::vector<const TriangleBuilder*>& builders) {
+  std::vector<ClusterMeans> means;
+  for (float cell : kCells) {
+    ClusterMeans& m = means.emplace_back();
+    m.cell = cell;
+    for (const TriangleBuilder* tb : builders) m.add(*tb);
+  }
+  return means;
+}
+
+osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float cell, float texelRepeat,
+                                             const ClusterMeans* shared) {
+  if (shared && shared->cell != cell) shared = nullptr;
+  return mergeCorners(tb, [&](std::size_t k) { return clusterKey(tb, k, cell); }, true, texelRepeat, shared);
+}
+
+bool isDense(const TriangleBuilder& tb) { return tb.v->size() / 3 > kDenseTriangles; }
+
+osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,
+                                   const std::vector<ClusterMeans>* means, bool levels) {
+  if (!levels) return geodeOf(weldTriangles(tb).get(), state);
+  const std::vector<ClusterMeans> own = means ? std::vector<ClusterMeans>{} : clusterMeans({&tb});
+  if (!means) means = &own;
   osg::ref_ptr<osg::Group> group = new osg::Group;
-  for (const TriangleBuilder& part : splitByCentroid(tb)) group->addChild(partWithLevels(part, state, texelRepeat));
+  for (const TriangleBuilder& part : splitByCentroid(tb))
+    group->addChild(partWithLevels(part, state, texelRepeat, *means));
   return group;
 }
 

@@ -29,6 +29,7 @@ bdfcar_check_osmesa_first(bench_render)
 # The ground's levels of detail: geometry only, no GL context.
 bdfcar_test(test_terrain_lod test_terrain_lod.cpp)
 target_link_libraries(test_terrain_lod PRIVATE bdfcar_render_scene)
+target_compile_definitions(test_terrain_lod PRIVATE BDFCAR_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 # Background priorities of encoders and drawing threads (no GL).
 bdfcar_test(test_thread_priority test_thread_priority.cpp)

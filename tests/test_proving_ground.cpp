@@ -235,3 +235,67 @@ TEST(Ground, TheProvingGroundsCircuitIsAsLongAsItsSegments) {
   EXPECT_NEAR(slope.point.z(), 2.0, 1e-4);
   EXPECT_NEAR(slope.normal.dot(Vector3d(-0.1, 0, 1).normalized()), 1.0, 1e-6);
 }
+
+namespace {
+
+// Heights of the drawn triangles above (x, y), brute force.
+std::vector<double> drawnHeights(const TriangleMesh& m, double x, double y) {
+  std::vector<double> out;
+  for (const auto& t : m.triangles) {
+    const Vector3d &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    const double det = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
+    if (std::abs(det) < 1e-12) continue;
+    const double u = ((x - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (y - a.y())) / det;
+    const double v = ((b.x() - a.x()) * (y - a.y()) - (x - a.x()) * (b.y() - a.y())) / det;
+    if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9) continue;
+    out.push_back(a.z() + u * (b.z() - a.z()) + v * (c.z() - a.z()));
+  }
+  return out;
+}
+
+}  // namespace
+
+// What is drawn of a ground is what the tyres touch: over the proving
+// ground's rough road and washboard (pieces whose relief dips below the
+// ground's plane) and beside them, the highest drawn surface is the one the
+// rays find, within a millimetre, and nothing drawn lies above it. Drawing
+// the plane across the pieces, as it once was, puts grass over every dip.
+TEST(Ground, TheDrawnSurfaceIsTheQueriedOneWhereAPieceDipsBelowThePlane) {
+  const TerrainData g = loadTerrain(asset("terrain/proving_ground.toml"));
+  const std::unique_ptr<Terrain> t = makeTerrain(g);
+  const TriangleMesh m = triangulate(g);
+  ASSERT_EQ(m.materials.size(), m.triangles.size());
+  int below0 = 0, checked = 0;
+  // Across the rough road (y -166 .. -154) and the washboard (y -210 .. -190), and the grass between.
+  for (double x = 31.37; x < 190; x += 7.31)
+    for (double y = -212.0; y <= -152.0; y += 0.83) {
+      const Hit h = below(*t, x, y);
+      ASSERT_TRUE(h.hit);
+      const std::vector<double> drawn = drawnHeights(m, x, y);
+      ASSERT_FALSE(drawn.empty()) << x << ", " << y;
+      EXPECT_NEAR(*std::max_element(drawn.begin(), drawn.end()), h.point.z(), 1e-3) << x << ", " << y;
+      below0 += h.point.z() < -1e-3;
+      ++checked;
+    }
+  EXPECT_GT(below0, 50) << "of " << checked;  // the relief does dip below the plane (127 points of 1600)
+}
+
+// The road's lanes and shoulders on relief are drawn as asphalt (the
+// surface's own triangles, no ribbon over them); the rough road's grass
+// verges stay grass.
+TEST(Ground, ARoadOnReliefIsDrawnAsAsphaltOverItsLanes) {
+  const TerrainData rough = loadTerrain(asset("terrain/rough.toml"));
+  ASSERT_TRUE(rough.road.present);
+  const TriangleMesh m = triangulate(rough);
+  const double half = rough.road.asphaltHalfWidth();
+  int lanes = 0, verges = 0;
+  for (std::size_t k = 0; k < m.triangles.size(); k += 101) {
+    const auto& t = m.triangles[k];
+    const Vector3d centre = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0;
+    const bool onRoad = std::abs(centre.y() - rough.road.centreY) <= half;
+    EXPECT_EQ(m.materials[k], onRoad ? Material::Asphalt : rough.material) << centre.transpose();
+    (onRoad ? lanes : verges) += 1;
+  }
+  EXPECT_GT(lanes, 0);
+  EXPECT_GT(verges, 0);
+}

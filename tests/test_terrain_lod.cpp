@@ -7,10 +7,14 @@
 #include <osg/LOD>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <tuple>
 
 #include "render/terrain_lod.h"
+#include "terrain/terrain_file.h"
+#include "terrain/terrain_mesh.h"
+#include "test_files.h"
 
 using namespace bdfcar::render;
 
@@ -55,6 +59,35 @@ double projectedArea(const osg::Geometry& g) {
     area += 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
   }
   return area;
+}
+
+// Of the points (x, y), the share covered by no triangle of the geometries.
+double uncovered(const std::vector<const osg::Geometry*>& gs, const std::vector<osg::Vec2>& points) {
+  std::map<int, std::vector<std::array<osg::Vec3, 3>>> byMetre;  // triangles by the whole metres of x they span
+  for (const osg::Geometry* g : gs) {
+    const auto& v = vertices(*g);
+    const auto& e = indices(*g);
+    for (std::size_t k = 0; k + 2 < e.size(); k += 3) {
+      const std::array<osg::Vec3, 3> t{v[e[k]], v[e[k + 1]], v[e[k + 2]]};
+      const float lo = std::min({t[0].x(), t[1].x(), t[2].x()}), hi = std::max({t[0].x(), t[1].x(), t[2].x()});
+      for (int m = int(std::floor(lo)); m <= int(std::floor(hi)); ++m) byMetre[m].push_back(t);
+    }
+  }
+  auto inside = [](const std::array<osg::Vec3, 3>& t, const osg::Vec2& q) {
+    auto side = [&](const osg::Vec3& a, const osg::Vec3& b) {
+      return (b.x() - a.x()) * (q.y() - a.y()) - (b.y() - a.y()) * (q.x() - a.x());
+    };
+    const float s0 = side(t[0], t[1]), s1 = side(t[1], t[2]), s2 = side(t[2], t[0]);
+    return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+  };
+  int missed = 0;
+  for (const osg::Vec2& q : points) {
+    bool hit = false;
+    for (const auto& t : byMetre[int(std::floor(q.x()))])
+      if ((hit = inside(t, q))) break;
+    missed += !hit;
+  }
+  return double(missed) / double(points.size());
 }
 
 }  // namespace
@@ -165,4 +198,69 @@ TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
     }
   }
   EXPECT_EQ(total, std::size_t(2 * 300 * 300));  // the parts' full levels together: every triangle once
+}
+
+// A generated road's mesh (a washboard): strips 0.25 m long and 10 m across
+// the road, ridges about z = 0. Clustered at each level it still covers its
+// rectangle (less a cell at the ends): no slit through which what lies
+// beneath would show.
+TEST(TerrainLod, ClusteringARoadOfLongStripsLeavesNoSlits) {
+  TriangleBuilder tb;
+  tb.enableTexcoords();
+  const float h = 0.25f, length = 50.0f;
+  const int n = static_cast<int>(length / h);
+  const float ys[3] = {-10.0f, 0.0f, 10.0f};
+  auto corner = [&](int i, float y) {
+    const float x = i * h;
+    const osg::Vec3 p(x, y, 0.01f * std::sin(2.0f * 3.14159265f * x / 0.7f));
+    tb.vertex(p, osg::Vec3(0, 0, 1), osg::Vec4(1, 1, 1, 1), osg::Vec2(x / kRepeat, y / kRepeat));
+  };
+  for (int i = 0; i < n; ++i)
+    for (int r = 0; r < 2; ++r) {
+      corner(i, ys[r]), corner(i + 1, ys[r]), corner(i + 1, ys[r + 1]);
+      corner(i, ys[r]), corner(i + 1, ys[r + 1]), corner(i, ys[r + 1]);
+    }
+  for (float cell : {0.25f, 1.0f, 4.0f}) {
+    const osg::ref_ptr<osg::Geometry> g = clusterTriangles(tb, cell, kRepeat);
+    const double area = projectedArea(*g);
+    EXPECT_LE(area, length * 20.0 * (1 + 1e-6)) << cell;
+    EXPECT_GE(area, (length - 2 * cell) * 20.0 * (1 - 1e-6)) << cell;
+  }
+}
+
+// The shipped washboard (a generated road mesh: strips across the whole
+// road, each cut into two triangles) split into two tiles by the triangles'
+// centroids, as the ground splits it: every strip has one triangle in each.
+// Both clustered with one table of means, the tiles' stand-ins still cover
+// the road together (less a cell at its ends). One clustered beside the
+// other drawn in full leaves slits along every strip: why a dense tile's
+// neighbours get stand-ins too (ground_node.cpp).
+TEST(TerrainLod, StandInsOfTwoTilesMeetWhenBothAreClusteredWithOneTable) {
+  using namespace bdfcar::terrain;
+  const TriangleMesh m = triangulate(loadTerrain(bdfcar::test::asset("terrain/washboard.toml")));
+  TriangleBuilder tiles[2];
+  for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+    const Eigen::Vector3d c = (m.vertices[m.triangles[k][0]] + m.vertices[m.triangles[k][1]] + m.vertices[m.triangles[k][2]]) / 3.0;
+    TriangleBuilder& tb = tiles[c.y() < 0.0 ? 0 : 1];
+    if (!tb.uv) tb.enableTexcoords();
+    for (int i : m.triangles[k]) {
+      const Eigen::Vector3d& p = m.vertices[i];
+      tb.vertex(osg::Vec3(p.x(), p.y(), p.z()), osg::Vec3(0, 0, 1), osg::Vec4(1, 1, 1, 1),
+                osg::Vec2(p.x() / kRepeat, p.y() / kRepeat));
+    }
+  }
+  const std::vector<ClusterMeans> shared = clusterMeans({&tiles[0], &tiles[1]});
+  for (const ClusterMeans& means : shared) {
+    // Points over the road (x -50 .. 400, y -10 .. 10) a cell in from its ends.
+    std::vector<osg::Vec2> points;
+    for (float x = -50.0f + 2 * means.cell + 0.013f; x < 400.0f - 2 * means.cell; x += 0.173f)
+      for (float y = -9.93f; y < 10.0f; y += 0.71f) points.emplace_back(x, y);
+    osg::ref_ptr<osg::Geometry> together[2];
+    for (int i = 0; i < 2; ++i) together[i] = clusterTriangles(tiles[i], means.cell, kRepeat, &means);
+    EXPECT_EQ(uncovered({together[0].get(), together[1].get()}, points), 0.0) << "cell " << means.cell;
+    const osg::ref_ptr<osg::Geometry> full = weldTriangles(tiles[1]);
+    if (means.cell >= 1.0f) {
+      EXPECT_GT(uncovered({together[0].get(), full.get()}, points), 0.01) << "cell " << means.cell;
+    }
+  }
 }

@@ -30,19 +30,40 @@ void printFrameStats(const FramesResult& r) {
 }
 
 struct RenderArgs {
-  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry, wav;
+  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry, wav, place;
   double fps = 30;
-  bool noFrames = false;  // video only: the raw frames go to ffmpeg, no PNG
+  bool noFrames = false;  // no PNG: the raw frames go to ffmpeg (--video), or nowhere (timing the drawing)
   ScenarioOverrides overrides;
 };
 
+// The scenario's [[places]] entry that `wanted` names (its name, or its number
+// from 1), or nothing.
+const scenario::Place* findPlace(const scenario::ScenarioSpec& spec, const std::string& wanted) {
+  for (std::size_t i = 0; i < spec.places.size(); ++i)
+    if (spec.places[i].name == wanted || std::to_string(i + 1) == wanted) return &spec.places[i];
+  return nullptr;
+}
+
 int runRender(const RenderArgs& a) {
-  if (a.noFrames ? a.video.empty() : a.outDir.empty()) {
-    std::fprintf(stderr, "error: %s\n", a.noFrames ? "--no-frames needs --video FILE (the frames go only there)"
-                                                   : "give --out DIR for the frames (or --no-frames --video FILE)");
+  if (!a.noFrames && a.outDir.empty()) {
+    std::fprintf(stderr, "error: give --out DIR for the frames (or --no-frames, with --video FILE or alone)\n");
     return kExitUsage;
   }
   scenario::ScenarioSpec spec = loadScenario(a.scenario, a.overrides);
+  if (!a.place.empty()) {
+    const scenario::Place* place = findPlace(spec, a.place);
+    if (!place) {
+      std::string names;
+      for (std::size_t i = 0; i < spec.places.size(); ++i)
+        names += (i ? ", " : "") + std::to_string(i + 1) + " '" + spec.places[i].name + "'";
+      std::fprintf(stderr, "error: --place: %s has no place '%s'; expected the name or number of one of its [[places]]%s\n",
+                   a.scenario.c_str(), a.place.c_str(), names.empty() ? " (it has none)" : (": " + names).c_str());
+      return kExitUsage;
+    }
+    spec.startX = place->x;
+    spec.startY = place->y;
+    spec.startHeading = place->heading;
+  }
   FramesOptions fo;
   fo.outDir = a.noFrames ? "" : a.outDir;
   fo.video = a.video;
@@ -114,7 +135,10 @@ void addHeadlessCommands(CLI::App& app, CommandList& commands) {
     cmd->add_option("scenario", a->scenario, "Scenario file")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out,-o", a->outDir, "Folder for frame_NNNNN.png (not with --no-frames)");
     cmd->add_flag("--no-frames", a->noFrames,
-                  "Video only: the raw frames are piped to ffmpeg (--video), no PNG is encoded or written");
+                  "No PNG is encoded or written: with --video the raw frames are piped to ffmpeg; alone, the frames "
+                  "are only drawn (their timing is printed: the frame rate without encoding)");
+    cmd->add_option("--place", a->place,
+                    "Start at one of the scenario's [[places]] (its name or number from 1), e.g. --place 'rough road'");
     cmd->add_option("--fps", a->fps, "Frames per second of simulated time")->check(CLI::Range(1.0, 240.0));
     cmd->add_option("--size", a->size, "Frame size, e.g. 1280x720");
     cmd->add_option("--video", a->video, "Also write a video (through ffmpeg), e.g. run.mp4");

@@ -25,6 +25,10 @@ struct RoadMarkings {
   double centreY = 0.0;              // lateral position of the road centre, m
   int lanes = 2;
   double laneWidth = 3.5;            // m
+  // Drawn asphalt beyond each edge line, m (not read from files).
+  static constexpr double kShoulder = 0.6;
+  // Half the drawn asphalt's width: the lanes and a shoulder each side, m.
+  double asphaltHalfWidth() const { return 0.5 * lanes * laneWidth + kShoulder; }
 };
 
 // A rectangle of the ground plane (world x, y; unbounded sides allowed) whose

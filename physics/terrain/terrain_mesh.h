@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "terrain/terrain_data.h"
@@ -15,6 +16,10 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> normals;       // per vertex, unit
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from above
   std::vector<Material> materials;            // one per triangle
+  // Triangles from this index on lie beneath the surface (a ground's beds
+  // under its pieces): seen only through slits a coarser drawing of the
+  // surface leaves, so drawn after it (an early depth test then skips them).
+  std::size_t firstBeneath = std::numeric_limits<std::size_t>::max();
 };
 
 // Vertices with per-vertex normals for drawing: meshes keep their triangles
