@@ -20,8 +20,11 @@ namespace {
 constexpr std::size_t kDenseTriangles = 20000;  // in one tile: above this it gets detail levels
 constexpr float kDenseTile = 12.5f;             // m, side of the parts a dense tile is cut into
 // Clustering cells of the stand-ins, m, finest first. A level is used beyond
-// kDistancePerCell cells from its part's bounding sphere: with 720 lines and a
-// 60 deg field of view a cell there spans about 3 pixels.
+// kDistancePerCell cells from its part's bounding sphere. Seen along the ground
+// from a driver's eye 1.5 m up (720 lines, 60 deg), a cell there is about 5
+// pixels deep, and a centimetre of relief under a pixel high. (At 120 cells,
+// a cell 3 pixels across, the rough road drew at 45 ms a frame on llvmpipe
+// and 28 ms at 30, with parts of 12.5 m instead of 25.)
 constexpr std::array<float, 3> kCells{0.25f, 1.0f, 4.0f};
 constexpr float kDistancePerCell = 30.0f;
 // A level worth having removes at least this share of the finer one's triangles.
