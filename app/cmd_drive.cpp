@@ -31,6 +31,7 @@ struct DriveArgs {
   std::string scenario = std::string(BDFCAR_ASSET_DIR) + "/scenarios/drive_powertrain.toml";
   std::string record, replay, telemetry, laps, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
   double seconds = 0;
+  int msaa = -1;  // --msaa; -1: automatic
   bool batch = false, noVsync = false, noSound = false, replayAnyway = false, scenarioGiven = false;
   ScenarioOverrides overrides;
 };
@@ -76,6 +77,7 @@ int runDrive(const DriveArgs& a) {
     io.recordDir = a.recordDir;
     io.seconds = a.seconds;
     io.vsync = !a.noVsync;
+    io.multisample = a.msaa;
     io.sound = !a.noSound;
     io.screenshot = a.screenshot;
     if (!parseSize(a.size, io.width, io.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT");
@@ -131,6 +133,10 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
   cmd->add_option("--seconds", a->seconds, "Stop after this much wall time")->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--size", a->size, "Window size, e.g. 1280x720");
   cmd->add_flag("--no-vsync", a->noVsync, "Do not wait for the display's refresh");
+  cmd->add_option("--msaa", a->msaa,
+                  "Multisampling (anti-aliasing) samples, 0 for none; default: 4 on a GPU, none on software GL (where "
+                  "each sample costs as much as a frame)")
+      ->check(CLI::Range(0, 16));
   cmd->add_flag("--no-sound", a->noSound, "No engine, tyre or wind sound (default: played on the default sound device)");
   cmd->add_option("--screenshot", a->screenshot, "Save the last frame as PNG");
   cmd->add_option("--mappings", a->mappings, "Folder of input mapping files (*.toml; default: the shipped ones)")

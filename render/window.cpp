@@ -4,6 +4,7 @@
 #include <SDL.h>
 
 #include <cstdlib>
+#include <string>
 
 #include "render/embedded_viewer.h"
 #include "render/gl_check.h"
@@ -19,10 +20,17 @@ struct Window::Impl {
   SDL_GLContext context = nullptr;
   osg::ref_ptr<osgViewer::Viewer> viewer;
   std::string renderer, screenshotPath;
-  int width = 0, height = 0;
+  int width = 0, height = 0, samples = 0;
 };
 
 namespace {
+
+// Mesa's software rasterisers, by the names GL_RENDERER gives them.
+bool isSoftwareRenderer(const std::string& renderer) {
+  for (const char* name : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
+    if (renderer.find(name) != std::string::npos) return true;
+  return false;
+}
 
 // Sets the GL attributes SDL uses for the next window's context.
 void requestContext(int samples) {
@@ -62,11 +70,22 @@ Window::Window(Scene& scene, const WindowOptions& options) : impl_(std::make_uni
   }
   Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
   if (options.fullscreen) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
-  for (int samples : {options.multisample, 0}) {
+  const bool autoSamples = options.multisample < 0;
+  for (int samples : {autoSamples ? 4 : options.multisample, 0}) {
     requestContext(samples);
     impl_->window = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                                      options.width, options.height, flags);
     if (impl_->window) impl_->context = SDL_GL_CreateContext(impl_->window);
+    // Multisampling chosen for us on a software rasteriser: the window again without.
+    if (impl_->context && autoSamples && samples > 0) {
+      SDL_GL_MakeCurrent(impl_->window, impl_->context);
+      const auto* r = glGetString(GL_RENDERER);
+      if (r && isSoftwareRenderer(reinterpret_cast<const char*>(r))) {
+        SDL_GL_MakeCurrent(impl_->window, nullptr);
+        SDL_GL_DeleteContext(impl_->context);
+        impl_->context = nullptr;
+      }
+    }
     if (impl_->context) break;
     if (impl_->window) SDL_DestroyWindow(impl_->window);
     impl_->window = nullptr;
@@ -83,6 +102,7 @@ Window::Window(Scene& scene, const WindowOptions& options) : impl_(std::make_uni
     const auto* r = glGetString(GL_RENDERER);
     requireGlContext(r, "SDL2 window");
     impl_->renderer = reinterpret_cast<const char*>(r);
+    if (SDL_GL_GetAttribute(SDL_GL_MULTISAMPLESAMPLES, &impl_->samples) != 0) impl_->samples = 0;
     SDL_GL_GetDrawableSize(impl_->window, &impl_->width, &impl_->height);
     impl_->viewer = makeEmbeddedViewer(impl_->scene, impl_->width, impl_->height);
   } catch (...) {
@@ -144,6 +164,7 @@ void Window::screenshotNextFrame(const std::string& pngPath) { impl_->screenshot
 int Window::width() const { return impl_->width; }
 int Window::height() const { return impl_->height; }
 const std::string& Window::glRenderer() const { return impl_->renderer; }
+int Window::samples() const { return impl_->samples; }
 void Window::setTitle(const std::string& title) { SDL_SetWindowTitle(impl_->window, title.c_str()); }
 
 std::string sdlVersion() {

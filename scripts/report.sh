@@ -237,20 +237,62 @@ bench_table() {
 } >> "$out"
 
 {
+  echo "### 7b. Frames on the proving ground, by area"
+  echo
+  echo "Each of drive_powertrain.toml's [[places]] with the car standing there, and the circuit driven"
+  echo "(circuit_lap.toml, its first 40 s): chase camera, 1280x720, HUD and track map on, frames drawn and"
+  echo "not written (no encoder competing for the 2 cores), software GL (OSMesa, llvmpipe). Commands:"
+  echo "\`env -u DISPLAY build/app/bdfcar render assets/scenarios/drive_powertrain.toml --place N --no-frames"
+  echo "--duration 2\` and \`... render assets/scenarios/proving_ground/circuit_lap.toml --no-frames --duration 40\`."
+  echo "Medians over $repeats runs of each run's render p50 and p99; frames per second = 1000 / p50."
+  echo
+  echo "| area | render p50 | render p99 | frames per second at p50 |"
+  echo "|---|---|---|---|"
+  frame_row() {  # frame_row LABEL ARGS...: one table row from $repeats runs
+    local label=$1 r lines=()
+    shift
+    for ((r = 0; r < repeats; ++r)); do
+      lines+=("$(env -u DISPLAY -u WAYLAND_DISPLAY "$build/app/bdfcar-headless" render "$@" --size 1280x720 --no-frames 2>&1 |
+        grep ' frames .*render p50' | tail -n 1)")
+    done
+    printf '%s\n' "${lines[@]}" | awk -v label="$label" '
+      { for (i = 1; i <= NF; ++i) {
+          if ($i == "p50" && $(i - 1) == "render") a[NR] = $(i + 1)
+          if ($i == "p99" && $(i - 3) == "p50") b[NR] = $(i + 1) } }
+      function median(x, n,   i, j, t) {
+        for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
+        return n % 2 ? x[(n + 1) / 2] : (x[n / 2] + x[n / 2 + 1]) / 2 }
+      END { p50 = median(a, NR); p99 = median(b, NR)
+            printf "| %s | %.1f ms | %.1f ms | %.0f |\n", label, p50, p99, (p50 > 0 ? 1000 / p50 : 0) }'
+  }
+  place=0
+  while IFS= read -r name; do
+    place=$((place + 1))
+    frame_row "$name (place $place)" assets/scenarios/drive_powertrain.toml --place "$place" --duration 2
+  done < <(sed -n 's/^name = "\(.*\)"$/\1/p' <(sed -n '/^\[\[places\]\]/,$p' assets/scenarios/drive_powertrain.toml))
+  frame_row "the circuit, driven (first 40 s)" assets/scenarios/proving_ground/circuit_lap.toml --duration 40
+  echo
+} >> "$out"
+
+{
   echo "## 8. The interactive loop"
   echo
   echo "\`bdfcar drive\` with paper.toml at the paper's setting, keyboard idle (the car rolls on), for"
   echo "$drive_seconds s of wall time; tick period, physics per tick, render per frame, peak resident memory."
   echo "Command: \`build/app/bdfcar drive --vehicle assets/vehicles/paper.toml --seconds $drive_seconds\`"
-  echo "(under \`xvfb-run -a -s '-screen 0 1280x720x24'\` when there is no display: software GL)."
+  echo "(under \`xvfb-run -a -s '-screen 0 1280x720x24'\` when there is no display: software GL, no"
+  echo "multisampling (\`--msaa\`: none on software GL unless asked), the sound through SDL's dummy audio driver)."
+  echo "The default scene: the proving ground (drive_powertrain.toml), sound, lap timing and the pause menu on."
   echo
   echo '```'
   drive=("$build/app/bdfcar" drive --vehicle assets/vehicles/paper.toml --seconds "$drive_seconds" --size 1280x720)
   if [ -n "${DISPLAY:-}" ]; then
     "${drive[@]}" 2>&1 | grep -A3 '^loop:' || echo "(the drive did not report loop statistics)"
   elif command -v xvfb-run > /dev/null; then
-    xvfb-run -a -s '-screen 0 1280x720x24' "${drive[@]}" 2>&1 | grep -A3 '^loop:' ||
-      echo "(the drive did not report loop statistics)"
+    # No sound card there either: SDL's dummy audio driver pulls the sound at
+    # the real rate, so the synthesiser runs as it would on a desktop.
+    SDL_AUDIODRIVER=${SDL_AUDIODRIVER:-dummy} xvfb-run -a -s '-screen 0 1280x720x24' "${drive[@]}" 2>&1 |
+      grep -A3 '^loop:' || echo "(the drive did not report loop statistics)"
   else
     echo "(skipped: no display and no xvfb-run)"
   fi

@@ -32,6 +32,7 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
   wo.width = opt.width;
   wo.height = opt.height;
   wo.vsync = opt.vsync;
+  wo.multisample = opt.multisample;
   wo.title = "bdfcar - " + session.spec().name;
   render::Window window(scene, wo);
   TickHandler handler(session, opt);

@@ -22,6 +22,7 @@ struct InteractiveOptions {
   double seconds = 0;                  // stop after this much wall time (0 = until quit or the end)
   int width = 1280, height = 720;
   bool vsync = true;
+  int multisample = -1;  // MSAA samples; -1: 4 on a GPU, none on software GL
   bool sound = true;                   // the car's sound on the sound card (audio/), when there is one
   std::string screenshot;              // PNG of the last frame, if set
   bool quitAtEnd = false;              // close when the scenario's duration is reached
