@@ -164,6 +164,7 @@ void HudNode::update(const vehicle::HudInfo& hud, CameraMode camera, BodyDisplay
   std::string right = format("t %7.2f s\n%s", hud.time, cameraName(camera));
   if (body != BodyDisplay::Solid) right += format(" / body %s", bodyDisplayName(body));
   if (!hud.model.empty()) right += "\nmodel " + hud.model;
+  if (body != BodyDisplay::Solid && !hud.members.empty()) right += "\n" + hud.members;
   if (hud.coneHits >= 0) right += format("\ncones hit %d", hud.coneHits);
   if (hud.courseTime >= 0) right += format("\ncourse %6.2f s", hud.courseTime);
   if (!hud.verdict.empty()) right += "\n" + hud.verdict;

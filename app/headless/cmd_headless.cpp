@@ -30,7 +30,7 @@ void printFrameStats(const FramesResult& r) {
 }
 
 struct RenderArgs {
-  std::string scenario, outDir, video, size = "1280x720", camera = "chase", telemetry, wav, place;
+  std::string scenario, outDir, video, size = "1280x720", camera = "chase", body = "solid", telemetry, wav, place;
   double fps = 30;
   bool noFrames = false;  // no PNG: the raw frames go to ffmpeg (--video), or nowhere (timing the drawing)
   ScenarioOverrides overrides;
@@ -69,6 +69,7 @@ int runRender(const RenderArgs& a) {
   fo.video = a.video;
   fo.fps = a.fps;
   fo.camera = a.camera;
+  fo.body = a.body;
   fo.wav = a.wav;
   if (!parseSize(a.size, fo.width, fo.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT, e.g. 1280x720");
   scenario::refuseSameOutputs({{"--telemetry", a.telemetry}, {"--wav", a.wav}, {"--video", a.video}});
@@ -144,6 +145,10 @@ void addHeadlessCommands(CLI::App& app, CommandList& commands) {
     cmd->add_option("--video", a->video, "Also write a video (through ffmpeg), e.g. run.mp4");
     cmd->add_option("--camera", a->camera, "chase, hood, orbit or top-down")
         ->check(CLI::IsMember({"chase", "hood", "orbit", "top-down"}));
+    cmd->add_option("--body", a->body,
+                    "solid, translucent or hidden: the last two show the suspension view, what the running model "
+                    "has (the linkage's members, the kinematic corners' springs, the planar body's posts)")
+        ->check(CLI::IsMember({"solid", "translucent", "hidden"}));
     cmd->add_option("--telemetry", a->telemetry, "Also write the telemetry CSV");
     cmd->add_option("--wav", a->wav,
                     "Also write the car's sound (engine, tyres, wind, shifts, bumps; as `drive` plays it) as a WAV "

@@ -38,6 +38,9 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   render::Scene scene(sceneConfigFor(session));
   for (const std::string& w : scene.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.setCamera(cameraMode(opt.camera));
+  scene.setBodyDisplay(opt.body == "hidden"        ? render::BodyDisplay::Hidden
+                       : opt.body == "translucent" ? render::BodyDisplay::Translucent
+                                                   : render::BodyDisplay::Solid);
   render::HeadlessRenderer renderer(scene, opt.width, opt.height);
   r.renderer = renderer.glRenderer();
   if (!opt.outDir.empty()) std::filesystem::create_directories(opt.outDir);

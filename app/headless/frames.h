@@ -16,6 +16,7 @@ struct FramesOptions {
   double fps = 30;
   int width = 1280, height = 720;
   std::string camera = "chase";  // chase, hood, orbit, top-down
+  std::string body = "solid";    // solid, translucent, hidden (the suspension view: the model's members)
   std::string wav;           // the soundtrack (audio/car_synth.h) as a WAV file; empty: none
 };
 

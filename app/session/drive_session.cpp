@@ -123,6 +123,11 @@ vehicle::HudInfo DriveSession::hud(double realTimeFactor, double stepSeconds, co
   h.realTimeFactor = realTimeFactor;
   h.stepTime = stepSeconds;
   h.model = vehicle::fidelityName(sim_->vehicle().fidelity);
+  switch (sim_->vehicle().fidelity) {
+    case vehicle::Fidelity::Linkage: h.members = "links: the vehicle file's members"; break;
+    case vehicle::Fidelity::Kinematic: h.members = "springs: the corners' tables"; break;
+    case vehicle::Fidelity::Planar: h.members = "posts: the body's roll and pitch"; break;
+  }
   if (sim_->spec().fidelity.automatic) {
     const long n = sim_->fidelitySwitches();
     h.model += " (auto, " + std::to_string(n) + (n == 1 ? " switch)" : " switches)");

@@ -222,6 +222,19 @@ Vehicle buildKinematic(const Vehicle& link, const Sweep& sw, const VectorXd& des
     specs.push_back(link.spec.bodies[LL.wheels[w].spindle]);
     // Springs of this corner act through their tabulated lengths.
     for (size_t k = 0; k < c.springs.size(); ++k) {
+      // What the suspension view draws of it: its chassis mount to its
+      // mount on the carrier, or to the wheel centre where it bears on a
+      // member this model has not kept (a lower arm).
+      const mb::SpringDamper& drawn = lm.springs[c.springs[k]];
+      const bool aOnChassis = drawn.bodyA == LL.chassis;
+      if (aOnChassis || drawn.bodyB == LL.chassis) {
+        const int other = aOnChassis ? drawn.bodyB : drawn.bodyA;
+        const Vec3& mount = aOnChassis ? drawn.pointA : drawn.pointB;
+        if (other == u)
+          L.links.push_back({L.chassis, carrierIndex[w], mount, aOnChassis ? drawn.pointB : drawn.pointA, LinkKind::Spring});
+        else
+          L.links.push_back({L.chassis, L.wheels[w].spindle, mount, wheel.inChild.origin, LinkKind::Spring});
+      }
       mb::SpringDamper e = lm.springs[c.springs[k]];
       e.bodyA = e.bodyB = mb::kGround;
       e.pointA = e.pointB = Vec3::Zero();

@@ -270,6 +270,16 @@ PlanarDerivation derivePlanar(const Vehicle& linkage) {
     mb::Data dd = mb::makeData(outV.model);
     mb::updatePositions(outV.model, designPositions(outV), dd);
     for (int w = 0; w < 4; ++w) loads.restTravel[w] = wheelCentreTravel(outV, dd, w);
+    // What the suspension view draws: no members here, so a post per corner
+    // from the wheel centre (on the base) to the sprung body 0.6 m above it
+    // at design; the body's roll and pitch show as the posts lean and stretch.
+    const int ch = L.chassis;
+    for (int w = 0; w < 4; ++w) {
+      const int sp = L.wheels[w].spindle;
+      const Vec3 centre = outV.model.bodies[sp].inChild.origin;
+      const Vec3 top = dd.R[ch].transpose() * (mb::pointPosition(dd, sp, centre) + Vec3(0, 0, 0.6) - dd.p[ch]);
+      L.links.push_back({ch, sp, top, centre, LinkKind::Strut});
+    }
   }
   outV.planar = loads;
   out.sprungMass = kch.mass;

@@ -91,6 +91,8 @@ struct HudInfo {
   // "PASSED" or "FAILED: why".
   std::string verdict;
   std::string model;                // the rung of the fidelity ladder driving (linkage, kinematic)
+  // What the suspension view (body translucent or hidden) draws for that model.
+  std::string members;
   std::string message;              // status line (paused, recording, diverged, ...)
   std::string menu;                 // the pause menu's lines while it is open ("" closed)
   double mapX = 0, mapY = 0, mapYaw = 0;  // the car on the track map: centre of mass (world, m), heading (rad)
