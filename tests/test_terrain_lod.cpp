@@ -200,34 +200,6 @@ TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
   EXPECT_EQ(total, std::size_t(2 * 300 * 300));  // the parts' full levels together: every triangle once
 }
 
-// A generated road's mesh (a washboard): strips 0.25 m long and 10 m across
-// the road, ridges about z = 0. Clustered at each level it still covers its
-// rectangle (less a cell at the ends): no slit through which what lies
-// beneath would show.
-TEST(TerrainLod, ClusteringARoadOfLongStripsLeavesNoSlits) {
-  TriangleBuilder tb;
-  tb.enableTexcoords();
-  const float h = 0.25f, length = 50.0f;
-  const int n = static_cast<int>(length / h);
-  const float ys[3] = {-10.0f, 0.0f, 10.0f};
-  auto corner = [&](int i, float y) {
-    const float x = i * h;
-    const osg::Vec3 p(x, y, 0.01f * std::sin(2.0f * 3.14159265f * x / 0.7f));
-    tb.vertex(p, osg::Vec3(0, 0, 1), osg::Vec4(1, 1, 1, 1), osg::Vec2(x / kRepeat, y / kRepeat));
-  };
-  for (int i = 0; i < n; ++i)
-    for (int r = 0; r < 2; ++r) {
-      corner(i, ys[r]), corner(i + 1, ys[r]), corner(i + 1, ys[r + 1]);
-      corner(i, ys[r]), corner(i + 1, ys[r + 1]), corner(i, ys[r + 1]);
-    }
-  for (float cell : {0.25f, 1.0f, 4.0f}) {
-    const osg::ref_ptr<osg::Geometry> g = clusterTriangles(tb, cell, kRepeat);
-    const double area = projectedArea(*g);
-    EXPECT_LE(area, length * 20.0 * (1 + 1e-6)) << cell;
-    EXPECT_GE(area, (length - 2 * cell) * 20.0 * (1 - 1e-6)) << cell;
-  }
-}
-
 // The shipped washboard (a generated road mesh: strips across the whole
 // road, each cut into two triangles) split into two tiles by the triangles'
 // centroids, as the ground splits it: every strip has one triangle in each.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include "portable_math.h"
+#include "terrain/terrain_extent.h"
 
 namespace bdfcar::terrain {
 
@@ -161,14 +162,8 @@ std::vector<Polygon> subtract(const Polygon& p, const Polygon& r) {
 
 // A piece's extent in x and y in its own frame (lo, hi).
 std::array<Eigen::Vector2d, 2> footprintBox(const TerrainData& d) {
-  if (d.kind == TerrainKind::Heightfield)
-    return {Eigen::Vector2d(d.x0, d.y0), Eigen::Vector2d(d.x0 + (d.cols - 1) * d.dx, d.y0 + (d.rows - 1) * d.dy)};
-  Eigen::Vector2d lo = d.vertices[0].head<2>(), hi = lo;
-  for (const Vector3d& v : d.vertices) {
-    lo = lo.cwiseMin(v.head<2>());
-    hi = hi.cwiseMax(v.head<2>());
-  }
-  return {lo, hi};
+  const Extent e = surfaceExtent(d);
+  return {e.lo.head<2>(), e.hi.head<2>()};
 }
 
 // The footprint (its extent in x and y, as ground_terrain.cpp takes it) of a
@@ -248,12 +243,7 @@ void addRectangle(TriangleMesh& out, const GroundPiece& p, const Eigen::Vector2d
 // them, which would otherwise show the sky.
 void addBed(TriangleMesh& out, const GroundPiece& p) {
   const TerrainData& d = p.terrain;
-  double lowest = 0;
-  if (d.kind == TerrainKind::Heightfield)
-    lowest = *std::min_element(d.heights.begin(), d.heights.end());
-  else
-    for (const Vector3d& v : d.vertices) lowest = std::min(lowest, v.z());
-  const double z = lowest - 0.05;
+  const double z = surfaceExtent(d).lo.z() - 0.05;
   const auto [lo, hi] = footprintBox(d);
   // A metre beyond the footprint, under the plane: where the piece's edge
   // dips below the plane the riser between them shows the bed, not the sky.

@@ -11,6 +11,7 @@
 
 #include "terrain/bullet/bullet_shapes.h"
 #include "terrain/bullet/bullet_terrain.h"
+#include "terrain/terrain_extent.h"
 
 namespace bdfcar::terrain {
 
@@ -39,23 +40,12 @@ struct PlacedPiece {
   }
 };
 
-// The corners of the box around a piece's surface in its own frame: a mesh's
-// vertices, a heightfield's grid and its lowest and highest heights.
+// The corners of the box around a piece's surface in its own frame.
 std::vector<Eigen::Vector3d> boxCorners(const TerrainData& d) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  if (d.kind == TerrainKind::Heightfield) {
-    const auto [minH, maxH] = std::minmax_element(d.heights.begin(), d.heights.end());
-    lo = Eigen::Vector3d(d.x0, d.y0, *minH);
-    hi = Eigen::Vector3d(d.x0 + (d.cols - 1) * d.dx, d.y0 + (d.rows - 1) * d.dy, *maxH);
-  } else {
-    for (const Eigen::Vector3d& v : d.vertices) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-  }
+  const Extent e = surfaceExtent(d);
   std::vector<Eigen::Vector3d> corners;
   for (int k = 0; k < 8; ++k)
-    corners.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    corners.emplace_back(k & 1 ? e.hi.x() : e.lo.x(), k & 2 ? e.hi.y() : e.lo.y(), k & 4 ? e.hi.z() : e.lo.z());
   return corners;
 }
 
