@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string>
+
+#include <unistd.h>
 
 #include "render/camera_rig.h"
 #include "render/frame.h"
@@ -354,8 +357,14 @@ TEST(Render, GlCallsResolveToOsMesaInTheHeadlessExecutable) {
 }
 #endif
 
+// A temporary path of this process's own: test_render and test_render_window
+// run the same tests, side by side under `ctest -j`.
+fs::path ownTemp(const std::string& stem, const std::string& extension = "") {
+  return fs::temp_directory_path() / (stem + "_" + std::to_string(::getpid()) + extension);
+}
+
 TEST(RenderOutput, PngFilesAreWrittenDirectlyAndByTheWorkerThread) {
-  const fs::path dir = fs::temp_directory_path() / "bdfcar_test_render_png";
+  const fs::path dir = ownTemp("bdfcar_test_render_png");
   fs::create_directories(dir);
   Frame f = makeFrame(16, 8);
   for (std::size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = static_cast<std::uint8_t>(i * 7);
@@ -379,7 +388,7 @@ TEST(RenderOutput, PngFilesAreWrittenDirectlyAndByTheWorkerThread) {
 
 TEST(RenderOutput, VideoThroughFfmpeg) {
   if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg not installed";
-  const fs::path file = fs::temp_directory_path() / "bdfcar_test_render.mp4";
+  const fs::path file = ownTemp("bdfcar_test_render", ".mp4");
   {
     VideoPipe video(file.string(), 33, 17, VideoOptions{25.0});  // odd size: padded to even
     Frame f = makeFrame(33, 17);
@@ -453,8 +462,7 @@ TEST(RenderGeometry, ChaseCameraHeadingLagsTheCarsOnACriticallyDampedSpring) {
 // a line over 64 KiB is refused at its line, and a small file still reads
 // (one square, two triangles).
 TEST(ObjMesh, ReadUnderTheLineLimits) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string good = (dir / "bdfcar_square.obj").string(), bad = (dir / "bdfcar_long_line.obj").string();
+  const std::string good = ownTemp("bdfcar_square", ".obj").string(), bad = ownTemp("bdfcar_long_line", ".obj").string();
   std::ofstream(good) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
   EXPECT_EQ(loadObj(good).triangles(), 2u);
   std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3" << std::string(70000, ' ') << "\n";
@@ -462,7 +470,7 @@ TEST(ObjMesh, ReadUnderTheLineLimits) {
     (void)loadObj(bad);
     ADD_FAILURE() << "a 70,000-byte line was read";
   } catch (const RenderError& e) {
-    EXPECT_NE(std::string(e.what()).find("bdfcar_long_line.obj:4: this line of the OBJ file is longer than 64 KiB"),
+    EXPECT_NE(std::string(e.what()).find(bad + ":4: this line of the OBJ file is longer than 64 KiB"),
               std::string::npos)
         << e.what();
   }
