@@ -1,8 +1,11 @@
 #include "integrator/forward_dynamics.h"
 
+#include "matrix_blocking.h"
+
 namespace bdfcar::integ {
 
 ForwardDynamics::ForwardDynamics(Dae& dae) : dae_(dae), n_(dae.sizes()), lu_(n_.nv + n_.nc) {
+  pinMatrixBlocking();  // before any product: the BDF and explicit integrators each hold one of these
   ws_.resize(n_);
   r_.resize(n_);
   M_.setZero(n_.nv, n_.nv);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matrix_blocking.h"
 #include "multibody/joint.h"
 #include "multibody/model_error.h"
 
@@ -235,6 +236,7 @@ void precomputeJoint(Body& b) {
 }  // namespace
 
 Model ModelBuilder::build() {
+  pinMatrixBlocking();  // every vehicle path starts here: its sweeps and equilibria are products too
   Model m = model_;
   int q = 0, v = 0;
   for (auto& b : m.bodies) {
