@@ -3,6 +3,7 @@
 // as a batch run) bit for bit.
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "demo_common.h"
 #include "interactive/drive_loop.h"
 #include "scenario_overrides.h"
+#include "session/drive_picks.h"
 
 namespace bdfcar::app {
 
@@ -35,6 +37,27 @@ struct DriveArgs {
   bool batch = false, noVsync = false, noSound = false, replayAnyway = false, scenarioGiven = false;
   ScenarioOverrides overrides;
 };
+
+// After a drive: the course's and the laps' results, its divergences, its
+// outputs written and closed.
+void finishDrive(DriveSession& session, const std::string& telemetry, const std::string& laps) {
+  if (const auto c = session.courseResult()) {
+    if (c->exitTime >= 0)
+      std::printf("course: %s, course time %.2f s\n", scenario::courseVerdict(*c).c_str(), c->exitTime - c->entryTime);
+    else
+      std::printf("course: %s\n", scenario::courseVerdict(*c).c_str());
+  }
+  if (const scenario::LapTimer* l = session.laps()) {
+    std::printf("%s", l->laps().empty() ? "laps: none completed\n" : scenario::lapsSummary(l->laps()).c_str());
+    if (!laps.empty()) scenario::writeLapFile(laps, l->laps(), l->sectors());
+  }
+  if (session.resets() > 0)
+    std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
+                session.resets() == 1 ? "" : "s", session.notice().c_str(), session.lastDivergence().c_str());
+  session.closeOutputs();
+  if (!telemetry.empty()) std::printf("telemetry: %s (%d segment%s)\n", telemetry.c_str(), session.segment() + 1,
+                                      session.segment() == 0 ? "" : "s");
+}
 
 int runDrive(const DriveArgs& a) {
   std::unique_ptr<Recording> replay;
@@ -62,13 +85,14 @@ int runDrive(const DriveArgs& a) {
   so.telemetryPath = a.telemetry;
   so.recordPath = a.record;
   so.rewindable = true;  // rewind, and a divergence goes back to the last good snapshot
-  DriveSession session(spec, so);
+  auto session = std::make_unique<DriveSession>(spec, so);
+  std::string lapsPath = a.laps;
   if (replay && a.batch) {
     // As fast as possible, no window: the same inputs give the same bits.
     for (const RecordedTick& e : replay->entries)
-      if (interruptRequested() || !session.replay(e)) break;
+      if (interruptRequested() || !session->replay(e)) break;
     std::printf("replayed %ld ticks to t = %.3f s (%d steps of %g s per %g ms tick)\n", replay->inputCount(),
-                session.time(), session.simulation().stepsPerTick(), spec.integrator.step, spec.tick * 1e3);
+                session->time(), session->simulation().stepsPerTick(), spec.integrator.step, spec.tick * 1e3);
   } else {
     InteractiveOptions io;
     io.driver = replay ? DriverSource::Replay : DriverSource::Person;
@@ -81,31 +105,51 @@ int runDrive(const DriveArgs& a) {
     io.sound = !a.noSound;
     io.screenshot = a.screenshot;
     if (!parseSize(a.size, io.width, io.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT");
-    const LoopStats stats = runInteractive(session, io);
-    std::printf("%s\n", stats.summary().c_str());
+    for (int drive = 1;; ++drive) {
+      DrivePicks picks;
+      if (!replay) picks = drivePicks(spec);  // a replay drives the recording's car
+      io.picks = picks.menu;
+      std::optional<MenuChoice> again;
+      const LoopStats stats = runInteractive(*session, io, &again);
+      std::printf("%s\n", stats.summary().c_str());
+      if (!again || interruptRequested()) break;
+      // "Drive them here": the chosen car on the chosen rung, at the place
+      // the drive was at, in outputs of its own; a car that cannot be driven
+      // is said and the drive goes on with the car it had.
+      ScenarioOverrides o = a.overrides;
+      o.vehicle = picks.carFiles[again->car];
+      o.fidelity = picks.menu.fidelities[again->fidelity];
+      const int place = session->place();
+      SessionOptions next = so;
+      next.telemetryPath = driveOutput(a.telemetry, drive + 1);
+      next.recordPath = driveOutput(a.record, drive + 1);
+      try {
+        scenario::ScenarioSpec nextSpec = loadScenario(scenarioFile, o);
+        auto nextSession = std::make_unique<DriveSession>(nextSpec, next);
+        if (place >= 0 && !nextSession->goTo(place)) io.startMessage = nextSession->placeNotice();
+        else io.startMessage = picks.menu.cars[again->car] + " on the " + *o.fidelity + " model";
+        finishDrive(*session, so.telemetryPath, lapsPath);
+        session = std::move(nextSession);
+        spec = std::move(nextSpec);
+        so = next;
+        lapsPath = driveOutput(a.laps, drive + 1);
+        std::printf("driving %s (%s) on the %s model%s%s\n", picks.menu.cars[again->car].c_str(),
+                    o.vehicle->c_str(), o.fidelity->c_str(), so.telemetryPath.empty() ? "" : "; telemetry: ",
+                    so.telemetryPath.c_str());
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s: %s; driving on with %s\n", o.vehicle->c_str(), e.what(),
+                     spec.vehicleFile.c_str());
+        io.startMessage = std::string("cannot drive ") + picks.menu.cars[again->car] + ": " + e.what();
+      }
+    }
   }
-  if (const auto c = session.courseResult()) {
-    if (c->exitTime >= 0)
-      std::printf("course: %s, course time %.2f s\n", scenario::courseVerdict(*c).c_str(), c->exitTime - c->entryTime);
-    else
-      std::printf("course: %s\n", scenario::courseVerdict(*c).c_str());
-  }
-  if (const scenario::LapTimer* l = session.laps()) {
-    std::printf("%s", l->laps().empty() ? "laps: none completed\n" : scenario::lapsSummary(l->laps()).c_str());
-    if (!a.laps.empty()) scenario::writeLapFile(a.laps, l->laps(), l->sectors());
-  }
-  if (session.resets() > 0)
-    std::printf("%d divergence%s, each time back to the last good snapshot; the last: %s: %s\n", session.resets(),
-                session.resets() == 1 ? "" : "s", session.notice().c_str(), session.lastDivergence().c_str());
-  session.closeOutputs();
-  if (!a.telemetry.empty()) std::printf("telemetry: %s (%d segment%s)\n", a.telemetry.c_str(), session.segment() + 1,
-                                        session.segment() == 0 ? "" : "s");
+  finishDrive(*session, so.telemetryPath, lapsPath);
   if (interruptRequested()) {
-    std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session.time());
+    std::fprintf(stderr, "stopped by %s at t = %.3f s\n", interruptSignalName(), session->time());
     return interruptExitStatus();
   }
-  if (session.failed()) {
-    std::fprintf(stderr, "error: %s\n", session.failure().c_str());
+  if (session->failed()) {
+    std::fprintf(stderr, "error: %s\n", session->failure().c_str());
     return 3;
   }
   return 0;

@@ -16,7 +16,9 @@
 #include <sstream>
 
 #include "session/drive_session.h"
+#include "session/drive_picks.h"
 #include "session/pause_menu.h"
+#include "scenario_overrides.h"
 
 #include "test_files.h"
 
@@ -349,6 +351,93 @@ TEST(PauseMenu, ListsThePlacesAndGivesTheChoice) {
   EXPECT_FALSE(m.isOpen());
   m.open();
   EXPECT_EQ(m.select().kind, app::MenuChoice::Kind::Resume);  // opens at its first item
+}
+
+// Where the drive offers them, the car and the fidelity: each item cycles
+// through its values when chosen and the menu stays open; "drive them here"
+// closes it and gives the values shown.
+TEST(PauseMenu, CyclesTheCarAndTheFidelityAndDrivesThemHere) {
+  const std::vector<scenario::Place> places{{"hill", 1, 2, 0}};
+  const app::MenuPicks picks{{"coupe", "sedan", "van"}, {"linkage", "kinematic", "planar", "auto"}, 1, 3};
+  app::PauseMenu m(places, picks);
+  m.open();
+  ASSERT_EQ(m.items(), 7);  // resume, restart, hill, car, fidelity, drive them here, quit
+  for (int i = 0; i < 3; ++i) m.down();
+  EXPECT_NE(m.text().find("> car: sedan"), std::string::npos) << m.text();
+  EXPECT_EQ(m.select().kind, app::MenuChoice::Kind::Cycled);
+  EXPECT_TRUE(m.isOpen());
+  EXPECT_NE(m.text().find("> car: van"), std::string::npos) << m.text();
+  m.down();
+  EXPECT_NE(m.text().find("> fidelity: auto"), std::string::npos) << m.text();
+  m.select();
+  m.select();  // auto -> linkage -> kinematic
+  EXPECT_NE(m.text().find("> fidelity: kinematic"), std::string::npos) << m.text();
+  m.down();
+  const app::MenuChoice c = m.select();
+  EXPECT_EQ(c.kind, app::MenuChoice::Kind::Relaunch);
+  EXPECT_EQ(c.car, 2);
+  EXPECT_EQ(c.fidelity, 1);
+  EXPECT_FALSE(m.isOpen());
+  // Without cars to offer, no such items.
+  EXPECT_EQ(app::PauseMenu(places).items(), 4);
+}
+
+// The drive's picks: the shipped cars with the scenario's own chosen, the
+// ladder with auto, the scenario's rung chosen; a scenario whose car is not
+// shipped gets it first. Each drive after the first writes outputs of its
+// own, never an existing file.
+TEST(DrivePicks, OfferTheShippedCarsAndTheLadderWithTheScenariosChosen) {
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(asset("scenarios/drive_powertrain.toml"));
+  const app::DrivePicks p = app::drivePicks(spec);
+  ASSERT_EQ(p.carFiles.size(), p.menu.cars.size());
+  ASSERT_GE(p.menu.cars.size(), 2u);
+  EXPECT_TRUE(std::filesystem::equivalent(p.carFiles[p.menu.car], spec.vehicleFile));
+  EXPECT_EQ(p.menu.cars[p.menu.car], "sedan_drive");
+  EXPECT_EQ(p.menu.fidelities[p.menu.fidelity], "auto");
+  EXPECT_NE(std::find(p.menu.fidelities.begin(), p.menu.fidelities.end(), "linkage"), p.menu.fidelities.end());
+
+  scenario::ScenarioSpec own = spec;
+  own.vehicleFile = temp("own_car.toml");
+  const app::DrivePicks q = app::drivePicks(own);
+  EXPECT_EQ(q.menu.car, 0);
+  EXPECT_EQ(q.carFiles[0], own.vehicleFile);
+  EXPECT_EQ(q.menu.cars.size(), p.menu.cars.size() + 1);
+
+  const std::string csv = temp("drive.csv"), second = temp("drive-2.csv");
+  EXPECT_EQ(app::driveOutput(csv, 1), csv);
+  EXPECT_EQ(app::driveOutput("", 2), "");
+  std::filesystem::remove(second);
+  EXPECT_EQ(app::driveOutput(csv, 2), second);
+  std::ofstream(second) << "an earlier drive's rows\n";
+  EXPECT_EQ(app::driveOutput(csv, 2), temp("drive-3.csv"));
+  std::filesystem::remove(second);
+}
+
+// "Drive them here" as the drive command does it: the scenario loaded again
+// with the chosen car and rung, the new drive started at the place the last
+// one was at.
+TEST(DriveSession, AnotherCarOnAnotherRungStartsWhereTheDriveWas) {
+  const std::string path = asset("scenarios/drive_powertrain.toml");
+  const scenario::ScenarioSpec spec = scenario::loadScenarioFile(path);
+  ASSERT_GE(spec.places.size(), 2u);
+  app::SessionOptions o;
+  o.rewindable = true;
+  app::DriveSession first(spec, o);
+  ASSERT_TRUE(first.goTo(1)) << first.placeNotice();
+  app::ScenarioOverrides pick;
+  pick.vehicle = asset("vehicles/paper.toml");
+  pick.fidelity = "linkage";
+  const scenario::ScenarioSpec again = app::loadScenario(path, pick);
+  app::DriveSession second(again, o);
+  ASSERT_TRUE(second.goTo(first.place())) << second.placeNotice();
+  EXPECT_TRUE(std::filesystem::equivalent(second.spec().vehicleFile, asset("vehicles/paper.toml")));
+  EXPECT_EQ(second.simulation().rungCount(), 1);
+  EXPECT_FALSE(second.spec().fidelity.automatic);
+  const vehicle::VehicleSample& s = second.lastSample();
+  EXPECT_NEAR(s.chassisOrigin.x(), spec.places[1].x, 0.1);
+  EXPECT_NEAR(s.chassisOrigin.y(), spec.places[1].y, 0.1);
+  for (int i = 0; i < 50; ++i) ASSERT_TRUE(second.tick(scenario::DriverInput{0.0, 0.3, 0.0})) << second.failure();
+  EXPECT_GT(second.lastSample().speed, 0.1);
 }
 
 // Every place of the default drive is a start: the car there at rest on

@@ -18,7 +18,7 @@
 
 namespace bdfcar::app {
 
-LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
+LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt, std::optional<MenuChoice>* relaunch) {
   // With software GL (Mesa llvmpipe, no GPU) drawing threads share the cores
   // with the tick: one drawing thread keeps the tick on time (p99 of the tick
   // period 11.4 ms against 13.8 ms with two, on two cores). Real GPU drivers
@@ -82,6 +82,7 @@ LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt) {
     stats.tick(period, physics, overrun);
   }
   drawing.stop();
+  if (relaunch) *relaunch = handler.relaunch();
   return stats;
 }
 

@@ -11,6 +11,7 @@
 #include "session/drive_session.h"
 #include "session/input_recording.h"
 #include "session/loop_stats.h"
+#include "session/pause_menu.h"
 
 namespace bdfcar::app {
 
@@ -29,11 +30,18 @@ struct InteractiveOptions {
   // With quitAtEnd: the closing card (the course's verdict, demo_common.h)
   // held on screen this long before the window closes.
   double closingCardSeconds = 3.0;
+  // The cars and fidelities the pause menu offers (none: no such items).
+  MenuPicks picks;
+  std::string startMessage;  // on the HUD from the first tick (what a relaunch did)
 };
 
 // Runs until the person quits, the time limit, or (quitAtEnd) the scenario
 // ends. Returns the loop statistics. Throws render::RenderError when no
-// window can be opened (the caller falls back to headless).
-LoopStats runInteractive(DriveSession& session, const InteractiveOptions& options);
+// window can be opened (the caller falls back to headless). When the person
+// chose "drive them here" in the pause menu, *relaunch (if given) holds that
+// choice (its car and fidelity indices in options.picks) and the loop has
+// ended: the caller starts the drive again at session.place().
+LoopStats runInteractive(DriveSession& session, const InteractiveOptions& options,
+                         std::optional<MenuChoice>* relaunch = nullptr);
 
 }  // namespace bdfcar::app

@@ -26,13 +26,14 @@ constexpr double kMessageSeconds = 4.0;
 
 TickHandler::TickHandler(DriveSession& session, const InteractiveOptions& options)
     : session_(session), options_(options), carSteering_(session.simulation().carSteering()),
-      menu_(session.spec().places) {
+      menu_(session.spec().places, options.picks) {
   if (options_.driver == DriverSource::Person) {
     input::InputOptions io;
     if (!options_.mappingDir.empty()) io.mappingDir = options_.mappingDir;
     io.onMessage = [](const std::string& m) { std::fprintf(stderr, "input: %s\n", m.c_str()); };
     devices_ = std::make_unique<input::InputSystem>(io);
   }
+  if (!options_.startMessage.empty()) say(options_.startMessage);
 }
 
 void TickHandler::say(const std::string& text) {
@@ -120,6 +121,10 @@ bool TickHandler::choose(const MenuChoice& choice) {
       else
         say(session_.placeNotice());
       break;
+    case MenuChoice::Kind::Cycled: break;  // the menu shows the next value
+    case MenuChoice::Kind::Relaunch:
+      relaunch_ = choice;
+      return true;
     case MenuChoice::Kind::Quit: return true;
   }
   return false;

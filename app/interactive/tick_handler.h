@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "input/input_system.h"
@@ -32,6 +33,9 @@ class TickHandler {
   // The pause menu's text while it is open, "" otherwise (the HUD's menu panel).
   std::string menuText() const;
   void setSteeringFeel();
+  // The menu's "drive them here": the car and fidelity chosen (the loop ends
+  // with it; the caller starts the drive again).
+  const std::optional<MenuChoice>& relaunch() const { return relaunch_; }
 
  private:
   void say(const std::string& text);
@@ -49,6 +53,7 @@ class TickHandler {
   std::string message_;
   long messageTicks_ = 0;          // ticks the message stays on screen
   int resetsSeen_ = 0;
+  std::optional<MenuChoice> relaunch_;
 };
 
 }  // namespace bdfcar::app
