@@ -415,9 +415,9 @@ void BdfIntegrator::dampOscillatingFastColumns() {
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) {
     const int i = fast[k];
     const double last = lastFastCorrection_(k), now = dv_(i);
-    const double tolerances = std::abs(hp * now) / (opt_.atol + opt_.rtol * std::abs(d_(i)));
+    // (The cheap tests first: this runs at every iteration of every step.)
     if (haveLastFastCorrection_ && now * last < 0 && std::abs(now) > 0.5 * std::abs(last) &&
-        tolerances > opt_.oscillationCorrection) {
+        std::abs(hp * now) > opt_.oscillationCorrection * (opt_.atol + opt_.rtol * std::abs(d_(i)))) {
       dq_(i) *= 0.5;
       dv_(i) *= 0.5;
       da_(i) *= 0.5;

@@ -6,6 +6,11 @@
 
 namespace bdfcar::scenario {
 
+double FidelityPolicy::roadNormalZ() {
+  static const double z = pm::cos(kRoadSlope);
+  return z;
+}
+
 FidelityPolicy::FidelityPolicy(const terrain::Terrain& terrain, double roadZ,
                                const std::array<Eigen::Vector2d, 4>& wheelOffsets,
                                const std::array<tyre::TyreParams, 4>& tyres, double lateralLevel)
@@ -14,7 +19,7 @@ FidelityPolicy::FidelityPolicy(const terrain::Terrain& terrain, double roadZ,
 bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
   const terrain::Hit h =
       terrain_.castRay(Eigen::Vector3d(xy.x(), xy.y(), roadZ_ + kRayAbove), -Eigen::Vector3d::UnitZ(), kRayLength);
-  return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= pm::cos(kRoadSlope);
+  return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= roadNormalZ();
 }
 
 // The box around the scan's points from `first` to `last` (linear in the
@@ -37,7 +42,7 @@ bool FidelityPolicy::levelAhead(double first, double last, const Point& point) c
   q.zBottom = roadZ_ + kRayAbove - kRayLength;
   q.height = roadZ_;
   q.tolerance = kRoadHeight;
-  q.minNormalZ = pm::cos(kRoadSlope);
+  q.minNormalZ = roadNormalZ();
   return terrain_.levelOver(q);
 }
 
@@ -78,7 +83,7 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
   double lowestMu = INFINITY;
   for (int w = 0; w < 4; ++w) {
     const tyre::ContactPlane& g = wheels[w].plane;
-    if (!g.valid || std::abs(g.point.z() - roadZ_) > kRoadHeight || g.normal.z() < pm::cos(kRoadSlope)) {
+    if (!g.valid || std::abs(g.point.z() - roadZ_) > kRoadHeight || g.normal.z() < roadNormalZ()) {
       s.fullUntil = std::max(s.fullUntil, s.odometer + kMargin);
       saturated = true;
       continue;

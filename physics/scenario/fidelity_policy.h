@@ -75,6 +75,9 @@ class FidelityPolicy {
   static constexpr double kCalm = 1.0;          // s
   static constexpr double kRoadHeight = 0.005;  // m off the road plane
   static constexpr double kRoadSlope = 0.5 * 3.14159265358979323846 / 180;  // rad
+  // cos(kRoadSlope): the least z of a level road's normal (computed once; the
+  // checks ask it for every wheel at every step).
+  static double roadNormalZ();
   // A switch may not move the chassis more than this (the mapping drops
   // what the lower rung has not got: heave, travels).
   static constexpr double kMaxJump = 0.005;  // m

@@ -439,7 +439,7 @@ std::optional<std::string> Simulation::offLevelGround() const {
   for (int w = 0; w < 4; ++w) {
     const tyre::ContactPlane& g = forces_->wheels()[w].plane;
     const double rise = g.valid ? g.point.z() - road : NAN;
-    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= pm::cos(FidelityPolicy::kRoadSlope))
+    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= FidelityPolicy::roadNormalZ())
       continue;
     const double grade = g.valid ? pm::hypot(g.normal.x(), g.normal.y()) / std::max(1e-9, g.normal.z()) : 0.0;
     char buf[700];
