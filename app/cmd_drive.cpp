@@ -123,24 +123,28 @@ int runDrive(const DriveArgs& a) {
       SessionOptions next = so;
       next.telemetryPath = driveOutput(a.telemetry, drive + 1);
       next.recordPath = driveOutput(a.record, drive + 1);
+      scenario::ScenarioSpec nextSpec;
+      std::unique_ptr<DriveSession> nextSession;
       try {
-        scenario::ScenarioSpec nextSpec = loadScenario(scenarioFile, o);
-        auto nextSession = std::make_unique<DriveSession>(nextSpec, next);
-        if (place >= 0 && !nextSession->goTo(place)) io.startMessage = nextSession->placeNotice();
-        else io.startMessage = picks.menu.cars[again->car] + " on the " + *o.fidelity + " model";
-        finishDrive(*session, so.telemetryPath, lapsPath);
-        session = std::move(nextSession);
-        spec = std::move(nextSpec);
-        so = next;
-        lapsPath = driveOutput(a.laps, drive + 1);
-        std::printf("driving %s (%s) on the %s model%s%s\n", picks.menu.cars[again->car].c_str(),
-                    o.vehicle->c_str(), o.fidelity->c_str(), so.telemetryPath.empty() ? "" : "; telemetry: ",
-                    so.telemetryPath.c_str());
+        nextSpec = loadScenario(scenarioFile, o);
+        nextSession = std::make_unique<DriveSession>(nextSpec, next);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s: %s; driving on with %s\n", o.vehicle->c_str(), e.what(),
                      spec.vehicleFile.c_str());
         io.startMessage = std::string("cannot drive ") + picks.menu.cars[again->car] + ": " + e.what();
+        continue;
       }
+      if (place >= 0 && !nextSession->goTo(place))
+        io.startMessage = nextSession->placeNotice();
+      else
+        io.startMessage = picks.menu.cars[again->car] + " on the " + *o.fidelity + " model";
+      finishDrive(*session, so.telemetryPath, lapsPath);  // a write error here ends the drive, as at its end
+      session = std::move(nextSession);
+      spec = std::move(nextSpec);
+      so = next;
+      lapsPath = driveOutput(a.laps, drive + 1);
+      std::printf("driving %s (%s) on the %s model%s%s\n", picks.menu.cars[again->car].c_str(), o.vehicle->c_str(),
+                  o.fidelity->c_str(), so.telemetryPath.empty() ? "" : "; telemetry: ", so.telemetryPath.c_str());
     }
   }
   finishDrive(*session, so.telemetryPath, lapsPath);

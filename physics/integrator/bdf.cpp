@@ -58,7 +58,6 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   sLu_ = Eigen::PartialPivLU<Mat>(m);
   w_.setZero(m);
   w2_.setZero(m);
-  lastFastCorrection_.setZero(m);
   sol_.setZero(n);
   e_.setZero(n);
   r_.resize(n_);
@@ -241,7 +240,6 @@ double BdfIntegrator::correctionNorm() const {
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
                                                    bool toTolerance, StepReport& rep, bool refreshFast) {
   bool refreshNow = refreshFast;
-  haveLastFastCorrection_ = false;  // a cycle is looked for within one run of iterations
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
   int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
@@ -303,7 +301,6 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     }
     st_->counters.solves += 3;
     ++st_->counters.newtonIterations;
-    if (opt_.dampOscillatingFastColumns) dampOscillatingFastColumns();
 
     d_ += dq_;
     v_ += dv_;
@@ -404,27 +401,6 @@ void BdfIntegrator::startFromPredictor() {
   v_ = vPred_;
   a_ = aPred_;
   lam_ = lamPred_;
-}
-
-// Halves the corrections of the fast coordinates that cycle (BdfOptions::
-// dampOscillatingFastColumns): turned back against the last iteration's,
-// not shrunk to half of it, and above oscillationCorrection tolerances.
-void BdfIntegrator::dampOscillatingFastColumns() {
-  const std::vector<int>& fast = dae_.fastColumns();
-  const double hp = factorizedHPrime_;
-  for (int k = 0; k < static_cast<int>(fast.size()); ++k) {
-    const int i = fast[k];
-    const double last = lastFastCorrection_(k), now = dv_(i);
-    // (The cheap tests first: this runs at every iteration of every step.)
-    if (haveLastFastCorrection_ && now * last < 0 && std::abs(now) > 0.5 * std::abs(last) &&
-        std::abs(hp * now) > opt_.oscillationCorrection * (opt_.atol + opt_.rtol * std::abs(d_(i)))) {
-      dq_(i) *= 0.5;
-      dv_(i) *= 0.5;
-      da_(i) *= 0.5;
-    }
-    lastFastCorrection_(k) = dv_(i);
-  }
-  haveLastFastCorrection_ = true;
 }
 
 // A step whose fixed count stalled. With fast columns (Dae::fastColumns):

@@ -54,17 +54,6 @@ struct BdfOptions {
   // columns (Dae::fastColumns) before the whole Jacobian.
   bool chordContinuation = true;
   bool fastColumnRescue = true;
-  // A fast column's coordinate (a wheel spin) whose Newton correction turns
-  // back without shrinking to half, while above oscillationCorrection
-  // tolerances, has its correction halved: the iteration is cycling across a
-  // steep, narrow range between two flat ones (a Fiala tyre's longitudinal
-  // force saturates within a few tenths of a per cent of slip; on a rough
-  // road the loaded radius swings the slip through it every step, and
-  // Newton from one saturated side lands on the other). Halving lands it
-  // inside the steep range, from which Newton converges. Large corrections
-  // only: the converging oscillation of a smooth run is left alone.
-  bool dampOscillatingFastColumns = true;
-  double oscillationCorrection = 300.0;
   StartUp startUp = StartUp::Auto;
   bool timing = true;             // accumulate the Jacobian / residual / back-substitution split
 };
@@ -142,11 +131,6 @@ class BdfIntegrator final : public Integrator {
   Mat fastBaseFv_, U_, Z_, S_;
   Eigen::PartialPivLU<Mat> sLu_;
   Vec w_, w2_;
-  // The fast columns' last velocity corrections in this run of Newton
-  // iterations (dampOscillatingFastColumns); none at its first.
-  Vec lastFastCorrection_;
-  bool haveLastFastCorrection_ = false;
-  void dampOscillatingFastColumns();
   double firstCorrection_ = 0;  // the first correction norm of the last Newton attempt
 
   // Step work vectors.
