@@ -14,6 +14,12 @@ std::vector<std::string> rungNameList() {
   return names;
 }
 
+std::vector<std::string> fidelityChoices() {
+  std::vector<std::string> names = rungNameList();
+  names.push_back("auto");
+  return names;
+}
+
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--step", ov.step, "Integration step, s")->check(CLI::Range(1e-6, 0.1));
   cmd.add_option("--tick", ov.tick, "The driver's input period, s (default: the scenario's, 10 ms); a whole number of steps")
@@ -26,11 +32,7 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
   cmd.add_option("--fidelity", ov.fidelity,
                  "Suspension model: linkage (the vehicle file's), kinematic or planar (derived from it at load "
                  "time), or auto (the cheapest within --error-budget, switched in mid-run where the scene needs it)")
-      ->check(CLI::IsMember([] {
-        std::vector<std::string> names = rungNameList();
-        names.push_back("auto");
-        return names;
-      }()));
+      ->check(CLI::IsMember(fidelityChoices()));
   cmd.add_option("--error-budget", ov.errorBudget,
                  "With --fidelity auto: the error allowed against the linkage, % of peak (RMS of yaw rate and "
                  "lateral acceleration; default 10: the planar model where the scene allows it)")

@@ -24,6 +24,8 @@ struct ScenarioOverrides {
 void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov);
 // The fidelity ladder's rung names (vehicle/ladder.h), for `--fidelity`.
 std::vector<std::string> rungNameList();
+// Those and "auto": what `--fidelity` and the pause menu offer.
+std::vector<std::string> fidelityChoices();
 // A repeatable --set KEY=VALUE option (one setting per occurrence) into `settings`.
 void addSetOption(CLI::App& cmd, std::vector<std::string>& settings, const std::string& help);
 // Applies the overrides; throws std::runtime_error on a bad combination.

@@ -6,9 +6,10 @@
 // The determinism contract (docs/DESIGN.md) wants the same bits on any
 // machine of a build flavour, so the sizes Eigen blocks by are pinned to one
 // set: every path that builds a model or an integrator calls this first
-// (cheap: two loads when already pinned). The values are those of the
-// machine the golden runs were recorded on; they change only the blocking
-// of products far larger than the physics' (a few dozen rows), not its speed.
+// (cheap: three loads when already pinned). The values are those of the
+// machine the golden runs were recorded on, so the golden hashes stand; on
+// matrices of a few dozen rows the blocking decides the sums' order, not
+// the speed.
 #pragma once
 
 #include <Eigen/Core>

@@ -34,8 +34,7 @@ DrivePicks drivePicks(const scenario::ScenarioSpec& spec) {
     p.carFiles.push_back(f.string());
     p.menu.cars.push_back(f.stem().string());
   }
-  p.menu.fidelities = rungNameList();
-  p.menu.fidelities.push_back("auto");
+  p.menu.fidelities = fidelityChoices();
   const std::string now = spec.fidelity.automatic ? "auto" : vehicle::fidelityName(spec.fidelity.suspension);
   for (size_t i = 0; i < p.menu.fidelities.size(); ++i)
     if (p.menu.fidelities[i] == now) p.menu.fidelity = static_cast<int>(i);
