@@ -119,16 +119,6 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
     };
     addSubdivided(pick, corner(t[0]), corner(t[1]), corner(t[2]), look.colour);
   }
-  // One table of cluster means for all tiles: their stand-ins meet edge to edge.
-  std::vector<const TriangleBuilder*> all;
-  for (const auto& [key, tb] : builders)
-    if (key[1] != static_cast<int>(Layer::Beneath)) all.push_back(&tb);
-  const std::vector<ClusterMeans> means = clusterMeans(all);
-  osg::ref_ptr<osg::Group> tiles = new osg::Group;
-  const int bins[4] = {kBinGround, kBinAsphalt, kBinRoadPaint, kBinBeneath};
-  const float offsets[4] = {0.0f, -2.0f, -4.0f, 0.0f};
-  // One state per (texture, layer), shared by its tiles.
-  std::map<std::pair<int, int>, osg::ref_ptr<osg::StateSet>> states;
   // Stand-ins for dense tiles and for their neighbours of the same look.
   auto levelsFor = [&](const std::array<int, 4>& key) {
     for (int dx = -1; dx <= 1; ++dx)
@@ -138,6 +128,31 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
       }
     return false;
   };
+  // Per look with stand-ins, its outline over all its tiles and one table of
+  // cluster means for them: their stand-ins meet edge to edge, and meet the
+  // other looks on the outline.
+  struct Outline {
+    LookOutline look;
+    std::vector<ClusterMeans> means;
+  };
+  std::map<std::pair<int, int>, Outline> outlines;
+  for (const auto& [key, tb] : builders) {
+    if (key[1] == static_cast<int>(Layer::Beneath) || !levelsFor(key) || outlines.count({key[0], key[1]})) continue;
+    std::vector<const TriangleBuilder*> tiles, full;
+    for (const auto& [other, otherTb] : builders)
+      if (other[0] == key[0] && other[1] == key[1]) (levelsFor(other) ? tiles : full).push_back(&otherTb);
+    Outline& outline = outlines.try_emplace({key[0], key[1]}, Outline{LookOutline(tiles, full), {}}).first->second;
+    std::vector<std::vector<std::uint8_t>> places;
+    for (const TriangleBuilder* t : tiles) places.push_back(outline.look.places(*t));
+    std::vector<const std::vector<std::uint8_t>*> placesOf;
+    for (const auto& p : places) placesOf.push_back(&p);
+    outline.means = clusterMeans(tiles, placesOf);
+  }
+  osg::ref_ptr<osg::Group> tiles = new osg::Group;
+  const int bins[4] = {kBinGround, kBinAsphalt, kBinRoadPaint, kBinBeneath};
+  const float offsets[4] = {0.0f, -2.0f, -4.0f, 0.0f};
+  // One state per (texture, layer), shared by its tiles.
+  std::map<std::pair<int, int>, osg::ref_ptr<osg::StateSet>> states;
   for (auto& [key, tb] : builders) {
     const int texture = key[0], layer = key[1];
     osg::ref_ptr<osg::StateSet>& ss = states[{texture, layer}];
@@ -149,7 +164,11 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
         ss->setAttributeAndModes(new osg::PolygonOffset(-1.0f, offsets[layer]), osg::StateAttribute::ON);
       ss->setRenderBinDetails(bins[layer], "RenderBin");
     }
-    tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, &means, levelsFor(key)));
+    const auto outline = outlines.find({texture, layer});
+    if (outline == outlines.end() || !levelsFor(key))
+      tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, nullptr, nullptr, false));
+    else
+      tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, &outline->second.look, &outline->second.means, true));
   }
   return tiles;
 }

@@ -265,11 +265,18 @@ bench_table() {
       END { p50 = median(a, NR); p99 = median(b, NR)
             printf "| %s | %.1f ms | %.1f ms | %.0f |\n", label, p50, p99, (p50 > 0 ? 1000 / p50 : 0) }'
   }
-  place=0
+  place=0 rough=0
   while IFS= read -r name; do
     place=$((place + 1))
+    [ "$name" = "rough road" ] && rough=$place
     frame_row "$name (place $place)" assets/scenarios/drive_powertrain.toml --place "$place" --duration 2
   done < <(sed -n 's/^name = "\(.*\)"$/\1/p' <(sed -n '/^\[\[places\]\]/,$p' assets/scenarios/drive_powertrain.toml))
+  # The rough road's place is its flat run-in; also 100 m on, on the relief
+  # (the proving ground's rough section lies along y = -160 m, right lane).
+  if [ "$rough" -gt 0 ]; then
+    frame_row "rough road, on its relief (100 m in)" assets/scenarios/drive_powertrain.toml --place "$rough" \
+      --set "places[$((rough - 1))].position=[100.0, -161.75]" --duration 2
+  fi
   frame_row "the circuit, driven (first 40 s)" assets/scenarios/proving_ground/circuit_lap.toml --duration 40
   echo
 } >> "$out"

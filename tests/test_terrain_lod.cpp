@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include "render/terrain_lod.h"
 #include "terrain/terrain_file.h"
@@ -119,9 +120,8 @@ TEST(TerrainLod, WeldingKeepsCreasesApart) {
 }
 
 // Clustering a 0.1 m grid at 1 m: on a plane every merged vertex stays on it,
-// the covered area is the square's less at most a cell along its edges, the
-// triangles drop by about (1 / 0.1)^2, and texture coordinates follow the
-// merged positions in world xy.
+// the square keeps its outline (its area), the triangles drop by about
+// (1 / 0.1)^2, and texture coordinates follow the merged positions in world xy.
 TEST(TerrainLod, ClusteringKeepsAPlaneAndItsArea) {
   const int n = 100;
   const float h = 0.1f, side = n * h, cell = 1.0f;
@@ -130,8 +130,7 @@ TEST(TerrainLod, ClusteringKeepsAPlaneAndItsArea) {
   const auto& v = vertices(*g);
   for (const osg::Vec3& p : v) EXPECT_EQ(p.z(), 0.0f);
   const double area = projectedArea(*g);
-  EXPECT_LE(area, side * side * (1 + 1e-6));
-  EXPECT_GE(area, (side - 2 * cell) * (side - 2 * cell));
+  EXPECT_NEAR(area, side * side, 1e-4 * side * side);
   const std::size_t before = tb.v->size() / 3, after = indices(*g).size() / 3;
   EXPECT_LE(after, 4 * before / 100) << before << " -> " << after;  // about 2 (side / cell)^2 left
   const auto* uv = static_cast<const osg::Vec2Array*>(g->getTexCoordArray(0));
@@ -204,9 +203,7 @@ TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
 // road, each cut into two triangles) split into two tiles by the triangles'
 // centroids, as the ground splits it: every strip has one triangle in each.
 // Both clustered with one table of means, the tiles' stand-ins still cover
-// the road together (less a cell at its ends). One clustered beside the
-// other drawn in full leaves slits along every strip: why a dense tile's
-// neighbours get stand-ins too (ground_node.cpp).
+// the road together (less a cell at its ends).
 TEST(TerrainLod, StandInsOfTwoTilesMeetWhenBothAreClusteredWithOneTable) {
   using namespace bdfcar::terrain;
   const TriangleMesh m = triangulate(loadTerrain(bdfcar::test::asset("terrain/washboard.toml")));
@@ -221,18 +218,113 @@ TEST(TerrainLod, StandInsOfTwoTilesMeetWhenBothAreClusteredWithOneTable) {
                 osg::Vec2(p.x() / kRepeat, p.y() / kRepeat));
     }
   }
-  const std::vector<ClusterMeans> shared = clusterMeans({&tiles[0], &tiles[1]});
+  const LookOutline look({&tiles[0], &tiles[1]});
+  const std::vector<std::uint8_t> places[2] = {look.places(tiles[0]), look.places(tiles[1])};
+  const std::vector<ClusterMeans> shared = clusterMeans({&tiles[0], &tiles[1]}, {&places[0], &places[1]});
   for (const ClusterMeans& means : shared) {
     // Points over the road (x -50 .. 400, y -10 .. 10) a cell in from its ends.
     std::vector<osg::Vec2> points;
     for (float x = -50.0f + 2 * means.cell + 0.013f; x < 400.0f - 2 * means.cell; x += 0.173f)
       for (float y = -9.93f; y < 10.0f; y += 0.71f) points.emplace_back(x, y);
     osg::ref_ptr<osg::Geometry> together[2];
-    for (int i = 0; i < 2; ++i) together[i] = clusterTriangles(tiles[i], means.cell, kRepeat, &means);
+    for (int i = 0; i < 2; ++i) together[i] = clusterTriangles(tiles[i], means.cell, kRepeat, &places[i], &means);
     EXPECT_EQ(uncovered({together[0].get(), together[1].get()}, points), 0.0) << "cell " << means.cell;
-    const osg::ref_ptr<osg::Geometry> full = weldTriangles(tiles[1]);
-    if (means.cell >= 1.0f) {
-      EXPECT_GT(uncovered({together[0].get(), full.get()}, points), 0.01) << "cell " << means.cell;
+  }
+}
+
+// A rolling 0.1 m grid cut in two tiles along x = 10.05 m (through its
+// triangles, by their centroids): the corners along the cut, inside the look
+// and on its outline where the cut meets it, move in clustering. Both tiles
+// clustered with one table still cover the grid along the cut.
+TEST(TerrainLod, StandInsOfATileCutThroughItsOutlineMeet) {
+  const TriangleBuilder whole = grid(200, 0.1f);
+  TriangleBuilder tiles[2];
+  for (TriangleBuilder& tb : tiles) tb.enableTexcoords();
+  for (std::size_t k = 0; k + 2 < whole.v->size(); k += 3) {
+    const float cx = ((*whole.v)[k].x() + (*whole.v)[k + 1].x() + (*whole.v)[k + 2].x()) / 3.0f;
+    for (std::size_t j = k; j < k + 3; ++j)
+      tiles[cx < 10.05f ? 0 : 1].vertex((*whole.v)[j], (*whole.n)[j], (*whole.c)[j], (*whole.uv)[j]);
+  }
+  const LookOutline look({&tiles[0], &tiles[1]});
+  const std::vector<std::uint8_t> places[2] = {look.places(tiles[0]), look.places(tiles[1])};
+  const std::vector<ClusterMeans> shared = clusterMeans({&tiles[0], &tiles[1]}, {&places[0], &places[1]});
+  std::vector<osg::Vec2> points;  // along the cut, to a cell from the grid's edges
+  for (float y = 0.013f; y < 19.99f; y += 0.0137f)
+    for (float x = 9.05f; x < 11.05f; x += 0.25f) points.emplace_back(x, y);
+  for (const ClusterMeans& means : shared) {
+    osg::ref_ptr<osg::Geometry> together[2];
+    for (int i = 0; i < 2; ++i) together[i] = clusterTriangles(tiles[i], means.cell, kRepeat, &places[i], &means);
+    EXPECT_EQ(uncovered({together[0].get(), together[1].get()}, points), 0.0) << "cell " << means.cell;
+  }
+}
+
+// A strip of two looks, asphalt (|y| < 4.1 m) and grass beyond it to 6 m, on
+// a 0.1 m grid, each clustered with its own look's outline: at every cell
+// size the asphalt's stand-in covers the asphalt side of their line and not
+// the grass side, and the grass's the other way round: they meet on the
+// line, not on a staircase of columns (the seam the ground's stand-ins drew
+// before), and leave no slit between them.
+TEST(TerrainLod, StandInsOfTwoLooksMeetOnTheirLine) {
+  TriangleBuilder asphalt = grid(0, 0.1f), grass = grid(0, 0.1f);
+  const int nx = 200, ny = 120;  // 20 m x 12 m from (0, -6)
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      TriangleBuilder& tb = std::abs(-6.0f + (j + 0.5f) * 0.1f) < 4.1f ? asphalt : grass;
+      auto corner = [&](int ci, int cj) {  // from the indices: a corner is the same in every cell
+        const float x = ci * 0.1f, y = -6.0f + cj * 0.1f;
+        tb.vertex(osg::Vec3(x, y, 0), osg::Vec3(0, 0, 1), osg::Vec4(1, 1, 1, 1), osg::Vec2(x / kRepeat, y / kRepeat));
+      };
+      corner(i, j), corner(i + 1, j), corner(i + 1, j + 1);
+      corner(i, j), corner(i + 1, j + 1), corner(i, j + 1);
     }
+  std::vector<osg::Vec2> inside, outside;  // 2 cm either side of the line y = 4.1 (and -4.1)
+  for (float x = 4.013f; x < 16.0f; x += 0.097f)
+    for (float side : {1.0f, -1.0f}) {
+      inside.emplace_back(x, side * 4.08f);
+      outside.emplace_back(x, side * 4.12f);
+    }
+  for (float cell : {0.25f, 1.0f, 4.0f}) {
+    const osg::ref_ptr<osg::Geometry> a = clusterTriangles(asphalt, cell, kRepeat);
+    const osg::ref_ptr<osg::Geometry> g = clusterTriangles(grass, cell, kRepeat);
+    EXPECT_EQ(uncovered({a.get()}, inside), 0.0) << "cell " << cell;
+    EXPECT_EQ(uncovered({a.get()}, outside), 1.0) << "cell " << cell;
+    EXPECT_EQ(uncovered({g.get()}, outside), 0.0) << "cell " << cell;
+    EXPECT_EQ(uncovered({g.get()}, inside), 1.0) << "cell " << cell;
+  }
+}
+
+// What a stand-in takes away decides where it is used: a level dense tile
+// (no relief) is drawn from its coarsest stand-in at once, every part's first
+// level far lighter than its triangles; relief keeps the full triangles
+// nearest, and the same relief ten times lower switches to each coarser
+// level no later, and sooner for the finest.
+TEST(TerrainLod, TheReliefAStandInTakesAwayDecidesWhereItIsUsed) {
+  osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+  auto firstLevels = [&](const TriangleBuilder& tb) {
+    std::vector<const osg::LOD*> lods;
+    const osg::ref_ptr<osg::Node> node = groundTile(tb, state.get(), kRepeat);
+    static std::vector<osg::ref_ptr<osg::Node>> keep;  // the LODs outlive this lambda
+    keep.push_back(node);
+    for (unsigned i = 0; i < node->asGroup()->getNumChildren(); ++i)
+      lods.push_back(dynamic_cast<const osg::LOD*>(node->asGroup()->getChild(i)));
+    return lods;
+  };
+  const int n = 200;
+  for (const osg::LOD* lod : firstLevels(grid(n, 0.1f, 0.0f, 0.0f, /*flat=*/true))) {
+    ASSERT_NE(lod, nullptr);
+    EXPECT_EQ(lod->getMinRange(0), 0.0f);
+    const auto* first = lod->getChild(0)->asGeode()->getDrawable(0)->asGeometry();
+    EXPECT_LT(indices(*first).size() / 3, std::size_t(2 * 125 * 125 / 20));  // a part is 12.5 m square at most
+  }
+  TriangleBuilder low = grid(n, 0.1f);
+  for (osg::Vec3& p : *low.v) p.z() *= 0.1f;
+  const std::vector<const osg::LOD*> high = firstLevels(grid(n, 0.1f)), lower = firstLevels(low);
+  ASSERT_EQ(high.size(), lower.size());
+  for (std::size_t i = 0; i < high.size(); ++i) {
+    ASSERT_GE(high[i]->getNumChildren(), 2u);
+    ASSERT_EQ(high[i]->getNumChildren(), lower[i]->getNumChildren()) << "part " << i;
+    EXPECT_LT(lower[i]->getMaxRange(0), high[i]->getMaxRange(0)) << "part " << i;
+    for (unsigned k = 0; k + 1 < high[i]->getNumChildren(); ++k)
+      EXPECT_LE(lower[i]->getMaxRange(k), high[i]->getMaxRange(k)) << "part " << i << " level " << k;
   }
 }
