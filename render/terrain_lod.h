@@ -4,7 +4,7 @@
 // costs a software rasteriser more to transform and set up than the rest of
 // the frame, even 150 m away where it covers a few pixels. Far tiles are drawn
 // from coarser stand-ins made by vertex clustering, as soon as what they take
-// away is under half a pixel; every level is indexed so that each corner is
+// away is under a pixel; every level is indexed so that each corner is
 // transformed once, not once per triangle that uses it.
 #pragma once
 
@@ -38,10 +38,11 @@ osg::ref_ptr<osg::Geometry> weldTriangles(const TriangleBuilder& tb);
 // outline: an outline edge is one a single triangle uses (where asphalt
 // meets grass, a road's end), not a cut between tiles or parts. A corner is
 // inside (kInside), on outline edges facing outwards in one of eight
-// directions (1..8), or where the outline turns (kHeld: it stays where it
-// is in every stand-in), as is every corner of the tiles `drawnInFull` (the
-// look's tiles that get no stand-ins: a corner moved beside one would open a
-// crack to it).
+// directions (1..8), or held (kHeld: it stays where it is in every
+// stand-in): where the outline turns, every corner of the tiles
+// `drawnInFull` (the look's tiles that get no stand-ins: a corner moved
+// beside one would open a crack to it), and the corners of triangles longer
+// than two parts (the plane around the pieces).
 constexpr std::uint8_t kInside = 0, kHeld = 255;
 class LookOutline {
  public:
@@ -78,14 +79,14 @@ std::vector<ClusterMeans> clusterMeans(const std::vector<const TriangleBuilder*>
 // their mean position with their mean normal; triangles that collapse are
 // dropped, repeats drawn once. Texture coordinates follow the merged position
 // (world xy / texelRepeat). Corners on the outline (`places`, by default
-// those of the builder's own outline) cluster apart from the inside, by the direction the
-// outline faces there: a straight edge between two looks stays where it is
-// (asphalt and grass meet on their line, not on a staircase of columns), and
-// where the outline turns the corner is held. With `shared` (at the same
-// cell) a vertex is its cluster's mean over everything the table was built
-// from. `error`: the largest distance of a corner from its merged
-// vertex's tangent plane, or the cell times the sine of the largest angle between their
-// normals (the relief a stand-in takes away, as a height), m.
+// those of the builder's own outline) cluster apart from the inside, by the
+// direction the outline faces there: a straight edge between two looks stays
+// where it is (asphalt and grass meet on their line, not on a staircase of
+// columns); held corners stay put. With `shared` (at the same cell) a vertex
+// is its cluster's mean over everything the table was built from. `error`:
+// the largest distance of a corner from its merged vertex's tangent plane,
+// or the cell times the sine of the largest angle between their normals
+// (the relief a stand-in takes away, as a height), m.
 osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float cell, float texelRepeat,
                                              const std::vector<std::uint8_t>* places = nullptr,
                                              const ClusterMeans* shared = nullptr, float* error = nullptr);
