@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -338,7 +339,6 @@ std::vector<ClusterMeans> clusterMeans(const std::vector<const TriangleBuilder*>
   return means;
 }
 
-
 osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float cell, float texelRepeat,
                                              const std::vector<std::uint8_t>* places, const ClusterMeans* shared,
                                              float* error) {
@@ -351,8 +351,8 @@ bool isDense(const TriangleBuilder& tb) { return tb.v->size() / 3 > kDenseTriang
 osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,
                                    const LookOutline* look, const std::vector<ClusterMeans>* means, bool levels) {
   if (!levels) return geodeOf(weldTriangles(tb).get(), state);
-  const LookOutline own({&tb});
-  if (!look) look = &own;
+  std::optional<LookOutline> own;
+  if (!look) look = &own.emplace(std::vector<const TriangleBuilder*>{&tb});
   std::vector<ClusterMeans> ownMeans;
   if (!means) {
     const std::vector<std::uint8_t> places = look->places(tb);
