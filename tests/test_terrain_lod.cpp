@@ -300,11 +300,10 @@ TEST(TerrainLod, StandInsOfTwoLooksMeetOnTheirLine) {
 // level no later, and sooner for the finest.
 TEST(TerrainLod, TheReliefAStandInTakesAwayDecidesWhereItIsUsed) {
   osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+  std::vector<osg::ref_ptr<osg::Node>> tiles;  // hold the parts' LODs for the test's length
   auto firstLevels = [&](const TriangleBuilder& tb) {
     std::vector<const osg::LOD*> lods;
-    const osg::ref_ptr<osg::Node> node = groundTile(tb, state.get(), kRepeat);
-    static std::vector<osg::ref_ptr<osg::Node>> keep;  // the LODs outlive this lambda
-    keep.push_back(node);
+    const osg::Node* node = tiles.emplace_back(groundTile(tb, state.get(), kRepeat)).get();
     for (unsigned i = 0; i < node->asGroup()->getNumChildren(); ++i)
       lods.push_back(dynamic_cast<const osg::LOD*>(node->asGroup()->getChild(i)));
     return lods;
