@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <string>
@@ -303,13 +304,41 @@ TEST(BulletTerrain, RaysThatMissReportNoHit) {
 // ---------------------------------------------------------------------------
 // Generated roads against their analytic shapes.
 
-// A mesh's rays straight down go through its plan-view grid: against
-// Bullet's tree walk (a second algorithm), bit for bit, on a bumpy mesh with
-// a step, a sliver, two layers (a deck over the road) and shared edges and
-// vertices, where ties fall to the lowest triangle index whatever the order.
-TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
+// Rays straight down over [xLo, xHi] x [yLo, yHi] through a mesh's plan-view
+// grid against Bullet's tree walk (a second algorithm), bit for bit; on grid
+// lines (multiples of `snap`) as often as between them: the ties, which fall
+// to the lowest triangle index whatever the order. Returns the hits.
+int expectGridHitsWhatTheTreeHits(const TerrainData& d, double xLo, double xHi, double yLo, double yHi, double snap,
+                                  const std::function<void(const Eigen::Vector3d&, const Hit&)>& alsoCheck = {}) {
+  const std::unique_ptr<Terrain> grid = makeMeshTerrain(d), tree = makeMeshTerrain(d, false);
+  EXPECT_TRUE(hasPlanGrid(*grid));
+  EXPECT_FALSE(hasPlanGrid(*tree));
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
+  int hits = 0;
+  for (int k = 0; k < 20000; ++k) {
+    double x = xLo + (xHi - xLo) * u(rng), y = yLo + (yHi - yLo) * u(rng);
+    if (k % 3 == 0) x = snap * std::round(x / snap);
+    if (k % 5 == 0) y = snap * std::round(y / snap);
+    const Eigen::Vector3d from(x, y, k % 2 ? 5.0 : 1.0);
+    const Eigen::Vector3d down(0, 0, -1);
+    const Hit a = grid->castRay(from, down, 8.0), e = tree->castRay(from, down, 8.0);
+    EXPECT_EQ(a.hit, e.hit) << x << ", " << y;
+    if (a.hit != e.hit) return hits;
+    if (!a.hit) continue;
+    ++hits;
+    EXPECT_EQ(a.distance, e.distance) << x << ", " << y;
+    EXPECT_EQ(a.point, e.point) << x << ", " << y;
+    EXPECT_EQ(a.normal, e.normal) << x << ", " << y;
+    if (a.point != e.point || a.normal != e.normal) return hits;
+    if (alsoCheck) alsoCheck(from, a);
+  }
+  return hits;
+}
+
+// On a bumpy mesh with a step, a sliver, two layers (a deck over the road)
+// and shared edges and vertices.
+TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
   TerrainData d;
   d.kind = TerrainKind::Mesh;
   const int n = 40;
@@ -331,31 +360,23 @@ TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
   d.vertices.emplace_back(19.9, 10.02, 0.5);
   d.vertices.emplace_back(19.9, 10.0, 0.6);
   d.triangles.push_back({s, s + 1, s + 2});
-  const std::unique_ptr<Terrain> grid = makeMeshTerrain(d), tree = makeMeshTerrain(d, false);
-  ASSERT_TRUE(hasPlanGrid(*grid));
-  ASSERT_FALSE(hasPlanGrid(*tree));
-  int hits = 0;
-  for (int k = 0; k < 20000; ++k) {
-    // On grid lines and vertices as often as between them (the ties).
-    double x = -1.0 + 22.0 * u(rng), y = -1.0 + 22.0 * u(rng);
-    if (k % 3 == 0) x = 0.5 * std::round(2 * x);
-    if (k % 5 == 0) y = 0.5 * std::round(2 * y);
-    const Eigen::Vector3d from(x, y, k % 2 ? 5.0 : 1.0);
-    const Eigen::Vector3d down(0, 0, -1);
-    const Hit a = grid->castRay(from, down, 8.0), e = tree->castRay(from, down, 8.0);
-    ASSERT_EQ(a.hit, e.hit) << x << ", " << y;
-    if (!a.hit) continue;
-    ++hits;
-    ASSERT_EQ(a.distance, e.distance) << x << ", " << y;
-    ASSERT_EQ(a.point, e.point) << x << ", " << y;
-    ASSERT_EQ(a.normal, e.normal) << x << ", " << y;
+  const int hits = expectGridHitsWhatTheTreeHits(d, -1, 21, -1, 21, 0.5, [](const Eigen::Vector3d& from, const Hit& a) {
     // Over the deck from above it: the deck; from under it: the road.
-    if (x > 4.1 && x < 11.9 && y > 4.1 && y < 5.9) {
-      if (from.z() > 3.0) EXPECT_EQ(a.point.z(), 3.0) << x << ", " << y;
-      else EXPECT_LT(a.point.z(), 0.5) << x << ", " << y;
+    if (from.x() > 4.1 && from.x() < 11.9 && from.y() > 4.1 && from.y() < 5.9) {
+      if (from.z() > 3.0) EXPECT_EQ(a.point.z(), 3.0) << from.transpose();
+      else EXPECT_LT(a.point.z(), 0.5) << from.transpose();
     }
-  }
+  });
   EXPECT_GT(hits, 15000);
+}
+
+// A road meshed in strips across its whole width (the washboard asset: ridges
+// 9 cm apart on a 20 m wide road), whose grid cells are a strip long and the
+// road wide: the same hits as the tree, the ridges' edges included.
+TEST(BulletTerrain, RaysDownOnARoadOfStripsHitWhatTheTreeHits) {
+  const TerrainData d = loadTerrain(assetPath("washboard.toml"));
+  ASSERT_EQ(d.kind, TerrainKind::Mesh);
+  EXPECT_GT(expectGridHitsWhatTheTreeHits(d, 25, 45, -9.9, 9.9, 0.0875), 19000);
 }
 
 TEST(RoadSurface, RampHeightAndNormalMatchAnalytic) {

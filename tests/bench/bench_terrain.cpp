@@ -1,7 +1,7 @@
 // Cost of one terrain ray: 1 m straight down from 0.5 m above the ground, as
 // a tyre query casts it, on the analytic plane, a Bullet heightfield and a
 // Bullet triangle mesh of the same 200 m x 200 m rough ground with 1 m cells
-// (80k triangles), and on the curb asset's road mesh.
+// (80k triangles), and on the curb's and the washboard's road meshes.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -71,10 +71,19 @@ void BM_RayCurbAssetMesh(benchmark::State& state) {
   castRays(state, *terrain, from);
 }
 
+// A road meshed in strips across its width: the washboard's ridges.
+void BM_RayWashboardAssetMesh(benchmark::State& state) {
+  static const auto terrain = makeTerrain(loadTerrain(std::string(BDFCAR_ASSETS_DIR) + "/terrain/washboard.toml"));
+  std::vector<Eigen::Vector3d> from = origins(3.5, 0.5);
+  for (auto& o : from) o.x() += 100.0;  // on the ridges, x in [30, 230]
+  castRays(state, *terrain, from);
+}
+
 }  // namespace
 
 BENCHMARK(BM_RayPlane);
 BENCHMARK(BM_RayHeightfield);
 BENCHMARK(BM_RayMesh);
 BENCHMARK(BM_RayCurbAssetMesh);
+BENCHMARK(BM_RayWashboardAssetMesh);
 BENCHMARK_MAIN();

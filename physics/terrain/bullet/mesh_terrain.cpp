@@ -23,14 +23,18 @@ namespace {
 // grown by), so testing the cell's triangles finds what the tree walk
 // finds, with the same test and the same tie rule (NearestTriangleHit: the
 // lowest triangle index): the same hit, bit for bit (tests/test_terrain.cpp).
-// Empty where it would not pay: a mesh whose triangles span many cells each
-// (a few large faces, long slivers) keeps the tree.
+// The cells are as long and as wide as the triangles on average, each axis
+// on its own: a road meshed in strips across its width (a washboard's
+// ridges, 9 cm by 20 m) gets cells of a strip's width, not square cells as
+// wide as the road holding hundreds of strips each. Empty where it would not
+// pay: a mesh whose triangles span many cells each (a few large faces,
+// slivers at all angles) keeps the tree.
 class PlanGrid {
  public:
   explicit PlanGrid(const TerrainData& data) {
     const size_t n = data.triangles.size();
     if (n < 64) return;  // the tree's walk is short
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, size = 0;
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, lengths = 0, widths = 0;
     for (const auto& t : data.triangles) {
       double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
       for (int k : t) {
@@ -38,17 +42,19 @@ class PlanGrid {
         lx = std::min(lx, v.x()), hx = std::max(hx, v.x()), ly = std::min(ly, v.y()), hy = std::max(hy, v.y());
       }
       x0 = std::min(x0, lx), x1 = std::max(x1, hx), y0 = std::min(y0, ly), y1 = std::max(y1, hy);
-      size += std::max(hx - lx, hy - ly);
+      lengths += hx - lx;
+      widths += hy - ly;
     }
-    // Cells about as large as the triangles, at most kMaxCells of them.
+    // Cells about as long and as wide as the triangles, at most 4097 a side.
     const double extent = std::max(x1 - x0, y1 - y0);
-    cell_ = std::max(size / static_cast<double>(n), extent / 4096.0);
+    cellX_ = std::max(lengths / static_cast<double>(n), extent / 4096.0);
+    cellY_ = std::max(widths / static_cast<double>(n), extent / 4096.0);
     margin_ = 1e-6 + 1e-6 * extent;  // beyond the edge tolerance's reach (1e-9 of a triangle)
     x0_ = x0 - margin_;
     y0_ = y0 - margin_;
-    nx_ = static_cast<int>((x1 - x0 + 2 * margin_) / cell_) + 1;
-    ny_ = static_cast<int>((y1 - y0 + 2 * margin_) / cell_) + 1;
-    if (!(cell_ > 0) || static_cast<double>(nx_) * ny_ > kMaxCells) {
+    nx_ = static_cast<int>((x1 - x0 + 2 * margin_) / cellX_) + 1;
+    ny_ = static_cast<int>((y1 - y0 + 2 * margin_) / cellY_) + 1;
+    if (!(cellX_ > 0 && cellY_ > 0) || static_cast<double>(nx_) * ny_ > kMaxCells) {
       clear();
       return;
     }
@@ -80,7 +86,7 @@ class PlanGrid {
   template <class F>
   void forEachAt(double x, double y, F&& f) const {
     if (!(x >= x0_ && y >= y0_)) return;
-    const double i = (x - x0_) / cell_, j = (y - y0_) / cell_;
+    const double i = (x - x0_) / cellX_, j = (y - y0_) / cellY_;
     if (!(i < nx_ && j < ny_)) return;
     const size_t c = static_cast<size_t>(j) * nx_ + static_cast<size_t>(i);
     for (int k = start_[c]; k < start_[c + 1]; ++k) f(triangles_[k]);
@@ -88,13 +94,13 @@ class PlanGrid {
 
  private:
   static constexpr double kMaxCells = 1 << 22;
-  int column(double x) const { return std::clamp(static_cast<int>((x - x0_) / cell_), 0, nx_ - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>((y - y0_) / cell_), 0, ny_ - 1); }
+  int column(double x) const { return std::clamp(static_cast<int>((x - x0_) / cellX_), 0, nx_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>((y - y0_) / cellY_), 0, ny_ - 1); }
   void clear() {
     start_.clear();
     triangles_.clear();
   }
-  double x0_ = 0, y0_ = 0, cell_ = 1, margin_ = 0;
+  double x0_ = 0, y0_ = 0, cellX_ = 1, cellY_ = 1, margin_ = 0;
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, triangles_;
 };
