@@ -21,6 +21,15 @@ namespace {
 
 constexpr std::size_t kDenseTriangles = 20000;  // in one tile: above this it gets detail levels
 constexpr float kDenseTile = 12.5f;             // m, side of the parts a dense tile is cut into
+// A part drawn in full near the camera is cut again, into quarters of this
+// side, each switching to the part's first stand-in on its own: only the
+// ground next to the camera is drawn in full, not the whole part around it
+// (a part's bounding radius, 8.8 m, is more than the distance its stand-in
+// needs on a rough road). Only there: small pieces everywhere would cost
+// more in draws than they save in triangles (software GL).
+constexpr float kNearTile = kDenseTile / 4;
+// Below this many triangles a part is not worth cutting again.
+constexpr std::size_t kNearSplit = 2000;
 // Clustering cells of the stand-ins, m, finest first.
 constexpr std::array<float, 3> kCells{0.25f, 1.0f, 4.0f};
 // A level is used where its error (clusterTriangles) is under kPixelError
@@ -186,14 +195,14 @@ osg::ref_ptr<osg::Geode> geodeOf(osg::Geometry* g, osg::StateSet* state) {
   return geode;
 }
 
-// The builder's triangles in parts of kDenseTile by their centroids, in a fixed order.
-std::vector<TriangleBuilder> splitByCentroid(const TriangleBuilder& tb) {
+// The builder's triangles in squares of `side` by their centroids, in a fixed order.
+std::vector<TriangleBuilder> splitByCentroid(const TriangleBuilder& tb, float side) {
   std::map<std::array<int, 2>, TriangleBuilder> parts;
   const bool textured = tb.uv && tb.uv->size() == tb.v->size();
   for (std::size_t k = 0; k + 2 < tb.v->size(); k += 3) {
     const osg::Vec3 centre = ((*tb.v)[k] + (*tb.v)[k + 1] + (*tb.v)[k + 2]) / 3.0f;
-    auto [it, added] = parts.try_emplace({static_cast<int>(std::floor(centre.x() / kDenseTile)),
-                                          static_cast<int>(std::floor(centre.y() / kDenseTile))});
+    auto [it, added] = parts.try_emplace({static_cast<int>(std::floor(centre.x() / side)),
+                                          static_cast<int>(std::floor(centre.y() / side))});
     if (added && textured) it->second.enableTexcoords();
     for (std::size_t j = k; j < k + 3; ++j)
       it->second.vertex((*tb.v)[j], (*tb.n)[j], (*tb.c)[j], textured ? (*tb.uv)[j] : osg::Vec2());
@@ -203,9 +212,44 @@ std::vector<TriangleBuilder> splitByCentroid(const TriangleBuilder& tb) {
   return out;
 }
 
-// One part: its welded geometry near, then each stand-in that pays for
-// itself, from where its error is under kPixelError (at once where it has
-// none) or kDistancePerCell cells, whichever is nearer.
+// Where a part's stand-in of `cell`, with this error, takes over from the
+// finer geometry: where its error is under kPixelError or kDistancePerCell
+// cells from the part's bounding sphere, whichever is nearer.
+float standInFrom(float radius, float cell, float error) {
+  return radius + std::min(kDistancePerCell * cell, error * kFocal / kPixelError);
+}
+
+// The part's full geometry as its nearest range draws it: in quarters
+// (kNearTile), each in full near the camera and as its own stand-in of
+// level `level` (the part's next) from standInFrom on, or whole where
+// cutting would not pay.
+osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, osg::Geometry* full, std::size_t level,
+                                  osg::StateSet* state, float texelRepeat, const LookOutline& look,
+                                  const std::vector<ClusterMeans>& means) {
+  if (triangleCount(*full) < kNearSplit) return geodeOf(full, state);
+  const std::vector<TriangleBuilder> quarters = splitByCentroid(part, kNearTile);
+  if (quarters.size() < 2) return geodeOf(full, state);
+  osg::ref_ptr<osg::Group> group = new osg::Group;
+  for (const TriangleBuilder& q : quarters) {
+    osg::ref_ptr<osg::Geometry> fine = weldTriangles(q);
+    float error = 0;
+    osg::ref_ptr<osg::Geometry> coarse =
+        clusterByPlaces(q, kCells[level], texelRepeat, look.places(q), &means[level], &error);
+    if (error <= 0.0f) {  // nothing lost: the stand-in throughout
+      group->addChild(geodeOf(coarse.get(), state));
+      continue;
+    }
+    osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+    const float switchAt = standInFrom(fine->getBound().radius(), kCells[level], error);
+    lod->addChild(geodeOf(fine.get(), state), 0.0f, switchAt);
+    lod->addChild(geodeOf(coarse.get(), state), switchAt, std::numeric_limits<float>::max());
+    group->addChild(lod);
+  }
+  return group;
+}
+
+// One part: its welded geometry near (nearRange), then each stand-in that
+// pays for itself, from standInFrom on (at once where it has no error).
 osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSet* state, float texelRepeat,
                                        const LookOutline& look, const std::vector<ClusterMeans>& means) {
   osg::ref_ptr<osg::Geometry> full = weldTriangles(part);
@@ -221,8 +265,11 @@ osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSe
     osg::ref_ptr<osg::Geometry> coarse = clusterByPlaces(part, cell, texelRepeat, place, &means[level], &error);
     if (double(triangleCount(*coarse)) > (1.0 - kMinReduction) * double(triangles)) continue;
     if (error > 0.0f) {
-      const float switchAt = std::max(from, radius + std::min(kDistancePerCell * cell, error * kFocal / kPixelError));
-      if (switchAt > from) lod->addChild(geodeOf(drawn.get(), state), from, switchAt);
+      const float switchAt = std::max(from, standInFrom(radius, cell, error));
+      if (switchAt > from)
+        lod->addChild(drawn == full ? nearRange(part, full.get(), level, state, texelRepeat, look, means)
+                                    : osg::ref_ptr<osg::Node>(geodeOf(drawn.get(), state)),
+                      from, switchAt);
       from = switchAt;
     }
     drawn = coarse;
@@ -360,7 +407,7 @@ osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* sta
     means = &ownMeans;
   }
   osg::ref_ptr<osg::Group> group = new osg::Group;
-  for (const TriangleBuilder& part : splitByCentroid(tb))
+  for (const TriangleBuilder& part : splitByCentroid(tb, kDenseTile))
     group->addChild(partWithLevels(part, state, texelRepeat, *look, *means));
   return group;
 }

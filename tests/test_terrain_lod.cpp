@@ -91,6 +91,25 @@ double uncovered(const std::vector<const osg::Geometry*>& gs, const std::vector<
   return double(missed) / double(points.size());
 }
 
+// The geometries a node draws at distance d from the camera (an LOD's child
+// whose range holds d; a group's children all).
+void drawnAt(const osg::Node* node, float d, std::vector<const osg::Geometry*>& out) {
+  if (const auto* lod = dynamic_cast<const osg::LOD*>(node)) {
+    for (unsigned k = 0; k < lod->getNumChildren(); ++k)
+      if (d >= lod->getMinRange(k) && d < lod->getMaxRange(k)) drawnAt(lod->getChild(k), d, out);
+  } else if (const osg::Geode* geode = node->asGeode()) {
+    for (unsigned k = 0; k < geode->getNumDrawables(); ++k) out.push_back(geode->getDrawable(k)->asGeometry());
+  } else if (const osg::Group* group = node->asGroup()) {
+    for (unsigned k = 0; k < group->getNumChildren(); ++k) drawnAt(group->getChild(k), d, out);
+  }
+}
+
+std::size_t triangles(const std::vector<const osg::Geometry*>& gs) {
+  std::size_t n = 0;
+  for (const osg::Geometry* g : gs) n += indices(*g).size() / 3;
+  return n;
+}
+
 }  // namespace
 
 // Welding draws the very corners it was given, each stored once: a grid of
@@ -188,15 +207,66 @@ TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
       if (k > 0) {
         EXPECT_EQ(lod->getMinRange(k), lod->getMaxRange(k - 1));
       }
-      const auto* geometry = lod->getChild(k)->asGeode()->getDrawable(0)->asGeometry();
-      EXPECT_EQ(geometry->getStateSet(), state.get());
-      const std::size_t triangles = indices(*geometry).size() / 3;
-      EXPECT_LT(triangles, previous) << "part " << i << " level " << k;
-      previous = triangles;
-      if (k == 0) total += triangles;
+      // At the start of its range (the nearest range: at the camera, all in full).
+      std::vector<const osg::Geometry*> drawn;
+      drawnAt(lod, lod->getMinRange(k), drawn);
+      ASSERT_FALSE(drawn.empty());
+      for (const osg::Geometry* g : drawn) EXPECT_EQ(g->getStateSet(), state.get());
+      const std::size_t n = triangles(drawn);
+      EXPECT_LT(n, previous) << "part " << i << " level " << k;
+      previous = n;
+      if (k == 0) total += n;
     }
   }
   EXPECT_EQ(total, std::size_t(2 * 300 * 300));  // the parts' full levels together: every triangle once
+}
+
+// A part's nearest range is drawn in pieces of a quarter of its side, each
+// in full near the camera and, farther than its own distance, as the
+// part's first stand-in (the same vertices: one table of means), no later
+// than the part itself switches: the full triangles are drawn only next to
+// the camera, not over the whole part around it, and the pieces meet the
+// part's stand-in and each other.
+TEST(TerrainLod, APartIsDrawnInFullOnlyNextToTheCamera) {
+  osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+  const osg::ref_ptr<osg::Node> dense = groundTile(grid(125, 0.1f), state.get(), kRepeat);  // one part, 12.5 m
+  const osg::Group* parts = dense->asGroup();
+  ASSERT_NE(parts, nullptr);
+  ASSERT_EQ(parts->getNumChildren(), 1u);
+  const auto* lod = dynamic_cast<const osg::LOD*>(parts->getChild(0));
+  ASSERT_NE(lod, nullptr);
+  ASSERT_GE(lod->getNumChildren(), 2u);
+  const float partSwitch = lod->getMaxRange(0);
+  const osg::Group* pieces = lod->getChild(0)->asGroup();
+  ASSERT_NE(pieces, nullptr);
+  ASSERT_EQ(pieces->getNumChildren(), 16u);
+  // The part's first stand-in, as drawn just past the nearest range.
+  std::vector<const osg::Geometry*> standIn;
+  drawnAt(lod, partSwitch, standIn);
+  ASSERT_EQ(standIn.size(), 1u);
+  std::set<std::tuple<float, float, float>> standInVertices;
+  for (const osg::Vec3& p : vertices(*standIn[0])) standInVertices.insert({p.x(), p.y(), p.z()});
+  std::size_t full = 0, near = 0;
+  for (unsigned i = 0; i < pieces->getNumChildren(); ++i) {
+    const auto* piece = dynamic_cast<const osg::LOD*>(pieces->getChild(i));
+    ASSERT_NE(piece, nullptr) << "piece " << i;
+    ASSERT_EQ(piece->getNumChildren(), 2u);
+    EXPECT_EQ(piece->getMinRange(0), 0.0f);
+    EXPECT_EQ(piece->getMinRange(1), piece->getMaxRange(0));
+    EXPECT_LE(piece->getMaxRange(0), partSwitch) << "piece " << i;
+    std::vector<const osg::Geometry*> fine, coarse;
+    drawnAt(piece, 0.0f, fine);
+    drawnAt(piece, piece->getMaxRange(0), coarse);
+    ASSERT_EQ(coarse.size(), 1u);
+    full += triangles(fine);
+    for (const osg::Vec3& p : vertices(*coarse[0]))
+      EXPECT_TRUE(standInVertices.count({p.x(), p.y(), p.z()})) << "piece " << i << ": " << p.x() << ", " << p.y();
+    // Drawn from a corner of the part, the pieces nearer than their own distance.
+    const osg::Vec3 c = piece->getChild(0)->getBound().center();
+    if (c.length() < piece->getMaxRange(0)) near += triangles(fine);
+  }
+  EXPECT_EQ(full, std::size_t(2 * 125 * 125));  // the pieces in full: every triangle once
+  EXPECT_LT(near, full / 2);
 }
 
 // The shipped washboard (a generated road mesh: strips across the whole
@@ -312,8 +382,9 @@ TEST(TerrainLod, TheReliefAStandInTakesAwayDecidesWhereItIsUsed) {
   for (const osg::LOD* lod : firstLevels(grid(n, 0.1f, 0.0f, 0.0f, /*flat=*/true))) {
     ASSERT_NE(lod, nullptr);
     EXPECT_EQ(lod->getMinRange(0), 0.0f);
-    const auto* first = lod->getChild(0)->asGeode()->getDrawable(0)->asGeometry();
-    EXPECT_LT(indices(*first).size() / 3, std::size_t(2 * 125 * 125 / 20));  // a part is 12.5 m square at most
+    std::vector<const osg::Geometry*> first;
+    drawnAt(lod, 0.0f, first);
+    EXPECT_LT(triangles(first), std::size_t(2 * 125 * 125 / 20));  // a part is 12.5 m square at most
   }
   TriangleBuilder low = grid(n, 0.1f);
   for (osg::Vec3& p : *low.v) p.z() *= 0.1f;
