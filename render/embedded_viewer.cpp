@@ -1,5 +1,9 @@
 #include "render/embedded_viewer.h"
 
+#include <osgUtil/SceneView>
+#include <osgUtil/Statistics>
+#include <osgViewer/Renderer>
+
 #include "render/nodes.h"
 
 namespace bdfcar::render {
@@ -42,6 +46,19 @@ void drawFrame(osgViewer::Viewer& viewer, Scene::Impl& scene, int width, int hei
   }
   scene.applyView(*camera, width, height);
   viewer.frame();
+}
+
+DrawLoad lastDrawLoad(osgViewer::Viewer& viewer) {
+  DrawLoad load;
+  auto* renderer = dynamic_cast<osgViewer::Renderer*>(viewer.getCamera()->getRenderer());
+  const osgUtil::SceneView* view = renderer ? renderer->getSceneView(0) : nullptr;
+  if (!view || !view->getRenderStage()) return load;
+  osgUtil::Statistics stats;
+  view->getRenderStage()->getStats(stats);
+  load.drawables = stats.numDrawables;
+  for (const auto& [mode, count] : stats.getPrimitiveCountMap())
+    if (mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN) load.triangles += count;
+  return load;
 }
 
 // Drops GL objects of everything the viewer drew, in the current context.

@@ -4,6 +4,7 @@
 
 #include <osgViewer/Viewer>
 
+#include "render/frame.h"
 #include "render/scene_impl.h"
 
 namespace bdfcar::render {
@@ -13,6 +14,11 @@ osg::ref_ptr<osgViewer::Viewer> makeEmbeddedViewer(Scene::Impl& scene, int width
 
 // Draws one frame of the scene at width x height into the current context.
 void drawFrame(osgViewer::Viewer& viewer, Scene::Impl& scene, int width, int height);
+
+// What the last frame drew: its drawables and triangles (OSG's statistics
+// of the render stage the cull produced). A count, steadier than the draw's
+// milliseconds on a shared machine.
+DrawLoad lastDrawLoad(osgViewer::Viewer& viewer);
 
 // Releases the viewer's GL objects while its context is still current (so a
 // later context reusing the same OSG context id starts clean).

@@ -15,6 +15,12 @@ struct Frame {
   const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
+// What one frame drew: the drawables the cull kept and their triangles.
+struct DrawLoad {
+  unsigned drawables = 0;
+  unsigned long triangles = 0;
+};
+
 // Any failure to set up or run a renderer, or to write its output.
 struct RenderError : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -72,6 +72,8 @@ void HeadlessRenderer::resize(int width, int height) {
   impl_->makeCurrent();
 }
 
+DrawLoad HeadlessRenderer::lastLoad() const { return lastDrawLoad(*impl_->viewer); }
+
 int HeadlessRenderer::width() const { return impl_->frame.width; }
 int HeadlessRenderer::height() const { return impl_->frame.height; }
 const std::string& HeadlessRenderer::glRenderer() const { return impl_->renderer; }

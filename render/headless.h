@@ -25,6 +25,8 @@ class HeadlessRenderer {
   // valid until the next render() or resize(). Throws RenderError on an all-black frame.
   const Frame& render();
   void resize(int width, int height);
+  // What the last render() drew.
+  DrawLoad lastLoad() const;
 
   int width() const;
   int height() const;

@@ -244,10 +244,12 @@ bench_table() {
   echo "not written (no encoder competing for the 2 cores), software GL (OSMesa, llvmpipe). Commands:"
   echo "\`env -u DISPLAY build/app/bdfcar render assets/scenarios/drive_powertrain.toml --place N --no-frames"
   echo "--duration 2\` and \`... render assets/scenarios/proving_ground/circuit_lap.toml --no-frames --duration 40\`."
-  echo "Medians over $repeats runs of each run's render p50 and p99; frames per second = 1000 / p50."
+  echo "Medians over $repeats runs of each run's render p50 and p99; frames per second = 1000 / p50; what a"
+  echo "frame draws (the median frame's triangles and drawables after culling and level of detail): a"
+  echo "count, the same on any machine, where the milliseconds move with the machine's load."
   echo
-  echo "| area | render p50 | render p99 | frames per second at p50 |"
-  echo "|---|---|---|---|"
+  echo "| area | render p50 | render p99 | frames per second at p50 | triangles / drawables a frame |"
+  echo "|---|---|---|---|---|"
   frame_row() {  # frame_row LABEL ARGS...: one table row from $repeats runs
     local label=$1 r lines=()
     shift
@@ -258,12 +260,14 @@ bench_table() {
     printf '%s\n' "${lines[@]}" | awk -v label="$label" '
       { for (i = 1; i <= NF; ++i) {
           if ($i == "p50" && $(i - 1) == "render") a[NR] = $(i + 1)
-          if ($i == "p99" && $(i - 3) == "p50") b[NR] = $(i + 1) } }
+          if ($i == "p99" && $(i - 3) == "p50") b[NR] = $(i + 1)
+          if ($i == "p50" && $(i - 1) == "drawn") { t[NR] = $(i + 1); d[NR] = $(i + 4) } } }
       function median(x, n,   i, j, t) {
         for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
         return n % 2 ? x[(n + 1) / 2] : (x[n / 2] + x[n / 2 + 1]) / 2 }
       END { p50 = median(a, NR); p99 = median(b, NR)
-            printf "| %s | %.1f ms | %.1f ms | %.0f |\n", label, p50, p99, (p50 > 0 ? 1000 / p50 : 0) }'
+            printf "| %s | %.1f ms | %.1f ms | %.0f | %.0f / %.0f |\n", label, p50, p99, (p50 > 0 ? 1000 / p50 : 0),
+                   median(t, NR), median(d, NR) }'
   }
   place=0 rough=0
   while IFS= read -r name; do

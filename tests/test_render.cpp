@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numbers>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -76,6 +79,9 @@ class Renderer {
     return headless_->render();
 #endif
   }
+#ifndef BDFCAR_TEST_WINDOW
+  DrawLoad lastLoad() const { return headless_->lastLoad(); }
+#endif
 
  private:
 #ifdef BDFCAR_TEST_WINDOW
@@ -311,6 +317,37 @@ TEST(Render, MissingBodyMeshFallsBackToABoxWithAWarning) {
   Renderer r(scene, 320, 180);
   EXPECT_GT(countPixels(frameAt(scene, r, 1.0), 0.3, 0.7, 0.35, 0.95, isPaint), 500);
 }
+
+#ifndef BDFCAR_TEST_WINDOW
+// What a frame drew, counted: the same view with a body mesh of one
+// material and with the fallback box differs by the mesh's triangles (a
+// face of n corners is n - 2 of them) less the box's 24, in as many drawables.
+TEST(Render, TheDrawLoadCountsTheTrianglesDrawn) {
+  // A pyramid over a pentagon, 1.4 m high, in the chassis frame: 3 + 5 triangles.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("bdfcar_draw_load_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string mesh = (dir / "pyramid.obj").string();
+  {
+    std::ofstream obj(mesh);
+    for (int k = 0; k < 5; ++k)
+      obj << "v " << 2.0 * std::cos(2 * std::numbers::pi * k / 5) << " " << 0.8 * std::sin(2 * std::numbers::pi * k / 5) << " 0\n";
+    obj << "v 0 0 1.4\nf 5 4 3 2 1\nf 1 2 6\nf 2 3 6\nf 3 4 6\nf 4 5 6\nf 5 1 6\n";
+  }
+  auto drawn = [](const std::string& body) {
+    SceneConfig cfg = testScene();
+    cfg.geometry.bodyMesh = body;
+    Scene scene(cfg);
+    Renderer r(scene, 320, 180);
+    frameAt(scene, r, 1.0);
+    return r.lastLoad();
+  };
+  const DrawLoad pyramid = drawn(mesh), box = drawn((dir / "no_such_body.obj").string());
+  std::filesystem::remove_all(dir);
+  EXPECT_GT(box.drawables, 0u);
+  EXPECT_EQ(pyramid.drawables, box.drawables);
+  EXPECT_EQ(long(pyramid.triangles) - long(box.triangles), 8 - 24);
+}
+#endif
 
 TEST(Render, StartUpCheckFailuresAreErrorsNotBlackPictures) {
   EXPECT_THROW(requireGlContext(nullptr, "test"), RenderError);

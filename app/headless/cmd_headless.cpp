@@ -22,6 +22,7 @@ void printFrameStats(const FramesResult& r) {
   const Percentiles rp = r.stats.render();
   std::printf("%d frames %dx%d (%s): render p50 %.1f ms, p99 %.1f ms", r.frames, r.width, r.height, r.renderer.c_str(),
               1e3 * rp.p50, 1e3 * rp.p99);
+  std::printf("; drawn p50 %lu triangles in %u drawables", r.drawnP50.triangles, r.drawnP50.drawables);
   if (r.pngEncode.p50 > 0)
     std::printf("; PNG encode p50 %.1f ms, p99 %.1f ms (worker thread)", 1e3 * r.pngEncode.p50, 1e3 * r.pngEncode.p99);
   // The whole pipeline: what a frame costs once encoding is paid for too.

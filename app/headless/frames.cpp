@@ -1,5 +1,6 @@
 #include "headless/frames.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,14 @@ render::CameraMode cameraMode(const std::string& name) {
   if (name == "orbit") return render::CameraMode::Orbit;
   if (name == "top-down") return render::CameraMode::TopDown;
   return render::CameraMode::Chase;
+}
+
+// The middle value (the lower of the two middle ones), 0 for none.
+template <class T>
+T median(std::vector<T> v) {
+  if (v.empty()) return T{};
+  std::nth_element(v.begin(), v.begin() + (v.size() - 1) / 2, v.end());
+  return v[(v.size() - 1) / 2];
 }
 }  // namespace
 
@@ -64,6 +73,8 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     synth = std::make_unique<audio::CarSynth>(kSoundRate);
   }
 
+  std::vector<unsigned> drawables;
+  std::vector<unsigned long> triangles;
   const double frameDt = 1.0 / opt.fps;
   const auto wall0 = Clock::now();
   const double sim0 = session.time();
@@ -84,6 +95,9 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
       scene.update(view, hud);
       const render::Frame& f = renderer.render();
       r.stats.frame(seconds(Clock::now() - t0));
+      const render::DrawLoad load = renderer.lastLoad();
+      drawables.push_back(load.drawables);
+      triangles.push_back(load.triangles);
       const auto t1 = Clock::now();
       if (pngs) {
         char name[64];
@@ -117,6 +131,7 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   }
   r.encodeSeconds += seconds(Clock::now() - t1);
   r.wallSeconds = seconds(Clock::now() - wall0);
+  r.drawnP50 = {median(drawables), median(triangles)};
   return r;
 }
 

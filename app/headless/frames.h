@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "render/frame.h"
 #include "session/drive_session.h"
 #include "session/loop_stats.h"
 
@@ -28,6 +29,7 @@ struct FramesResult {
   double wallSeconds = 0;    // the whole run, first frame to the last file closed
   Percentiles pngEncode;     // encoding + writing one PNG (worker thread, overlaps rendering)
   std::string renderer;      // GL_RENDERER
+  render::DrawLoad drawnP50;  // per frame, the medians of drawables and triangles drawn
   long soundFrames = 0;      // samples written to the WAV
 };
 
