@@ -223,15 +223,13 @@ float standInFrom(float radius, float cell, float error) {
 // (kNearTile), each in full near the camera and as its own stand-in of
 // level `level` (the part's next) from standInFrom on, or whole where
 // cutting would not pay.
-osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, osg::Geometry* full, std::size_t level,
-                                  osg::StateSet* state, float texelRepeat, const LookOutline& look,
-                                  const std::vector<ClusterMeans>& means) {
-  if (triangleCount(*full) < kNearSplit) return geodeOf(full, state);
+osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, std::size_t level, osg::StateSet* state,
+                                  float texelRepeat, const LookOutline& look, const std::vector<ClusterMeans>& means) {
+  if (part.v->size() / 3 < kNearSplit) return geodeOf(weldTriangles(part).get(), state);
   const std::vector<TriangleBuilder> quarters = splitByCentroid(part, kNearTile);
-  if (quarters.size() < 2) return geodeOf(full, state);
+  if (quarters.size() < 2) return geodeOf(weldTriangles(part).get(), state);
   osg::ref_ptr<osg::Group> group = new osg::Group;
   for (const TriangleBuilder& q : quarters) {
-    osg::ref_ptr<osg::Geometry> fine = weldTriangles(q);
     float error = 0;
     osg::ref_ptr<osg::Geometry> coarse =
         clusterByPlaces(q, kCells[level], texelRepeat, look.places(q), &means[level], &error);
@@ -239,6 +237,7 @@ osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, osg::Geometry* fu
       group->addChild(geodeOf(coarse.get(), state));
       continue;
     }
+    osg::ref_ptr<osg::Geometry> fine = weldTriangles(q);
     osg::ref_ptr<osg::LOD> lod = new osg::LOD;
     const float switchAt = standInFrom(fine->getBound().radius(), kCells[level], error);
     lod->addChild(geodeOf(fine.get(), state), 0.0f, switchAt);
@@ -249,14 +248,16 @@ osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, osg::Geometry* fu
 }
 
 // One part: its welded geometry near (nearRange), then each stand-in that
-// pays for itself, from standInFrom on (at once where it has no error).
+// pays for itself, from standInFrom on (at once where it has no error). The
+// full geometry is welded only where it is drawn whole (nearRange cuts it).
 osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSet* state, float texelRepeat,
                                        const LookOutline& look, const std::vector<ClusterMeans>& means) {
-  osg::ref_ptr<osg::Geometry> full = weldTriangles(part);
   osg::ref_ptr<osg::LOD> lod = new osg::LOD;
-  const float radius = full->getBound().radius();
-  std::size_t triangles = triangleCount(*full);
-  osg::ref_ptr<osg::Geometry> drawn = full;
+  osg::BoundingBox box;  // as the welded geometry's bound: the same corners
+  for (const osg::Vec3& p : *part.v) box.expandBy(p);
+  const float radius = osg::BoundingSphere(box).radius();
+  std::size_t triangles = part.v->size() / 3;
+  osg::ref_ptr<osg::Geometry> drawn;  // none yet: the full geometry
   const std::vector<std::uint8_t> place = look.places(part);
   float from = 0.0f;
   for (std::size_t level = 0; level < kCells.size(); ++level) {
@@ -267,14 +268,15 @@ osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSe
     if (error > 0.0f) {
       const float switchAt = std::max(from, standInFrom(radius, cell, error));
       if (switchAt > from)
-        lod->addChild(drawn == full ? nearRange(part, full.get(), level, state, texelRepeat, look, means)
-                                    : osg::ref_ptr<osg::Node>(geodeOf(drawn.get(), state)),
+        lod->addChild(drawn ? osg::ref_ptr<osg::Node>(geodeOf(drawn.get(), state))
+                            : nearRange(part, level, state, texelRepeat, look, means),
                       from, switchAt);
       from = switchAt;
     }
     drawn = coarse;
     triangles = triangleCount(*coarse);
   }
+  if (!drawn) drawn = weldTriangles(part);
   lod->addChild(geodeOf(drawn.get(), state), from, std::numeric_limits<float>::max());
   return lod;
 }
