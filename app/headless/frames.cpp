@@ -1,6 +1,5 @@
 #include "headless/frames.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -29,14 +28,6 @@ render::CameraMode cameraMode(const std::string& name) {
   if (name == "orbit") return render::CameraMode::Orbit;
   if (name == "top-down") return render::CameraMode::TopDown;
   return render::CameraMode::Chase;
-}
-
-// The middle value (the lower of the two middle ones), 0 for none.
-template <class T>
-T median(std::vector<T> v) {
-  if (v.empty()) return T{};
-  std::nth_element(v.begin(), v.begin() + (v.size() - 1) / 2, v.end());
-  return v[(v.size() - 1) / 2];
 }
 }  // namespace
 
@@ -73,8 +64,7 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
     synth = std::make_unique<audio::CarSynth>(kSoundRate);
   }
 
-  std::vector<unsigned> drawables;
-  std::vector<unsigned long> triangles;
+  std::vector<double> drawables, triangles;  // per frame
   const double frameDt = 1.0 / opt.fps;
   const auto wall0 = Clock::now();
   const double sim0 = session.time();
@@ -131,7 +121,8 @@ FramesResult renderFrames(DriveSession& session, const FramesOptions& opt) {
   }
   r.encodeSeconds += seconds(Clock::now() - t1);
   r.wallSeconds = seconds(Clock::now() - wall0);
-  r.drawnP50 = {median(drawables), median(triangles)};
+  r.drawnP50 = {static_cast<unsigned>(percentiles(drawables).p50),
+                static_cast<unsigned long>(percentiles(triangles).p50)};
   return r;
 }
 
