@@ -165,8 +165,10 @@ osg::ref_ptr<osg::Node> makeGroundNode(const terrain::TriangleMesh& mesh) {
       ss->setRenderBinDetails(bins[layer], "RenderBin");
     }
     const auto outline = outlines.find({texture, layer});
+    const bool overAnother = layer == static_cast<int>(Layer::Surface) || layer == static_cast<int>(Layer::Paint);
     if (outline == outlines.end() || !levelsFor(key))
-      tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, nullptr, nullptr, false));
+      tiles->addChild(overAnother ? thinnedWithDistance(tb, ss.get(), kTexelRepeat)
+                                  : groundTile(tb, ss.get(), kTexelRepeat, nullptr, nullptr, false));
     else
       tiles->addChild(groundTile(tb, ss.get(), kTexelRepeat, &outline->second.look, &outline->second.means, true));
   }

@@ -1,7 +1,9 @@
 #include <osg/Geode>
+#include <osg/LOD>
 #include <osg/PolygonOffset>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -9,6 +11,7 @@
 
 #include "render/nodes.h"
 #include "render/osg_convert.h"
+#include "render/terrain_lod.h"
 #include "render/textures.h"
 
 namespace bdfcar::render {
@@ -40,11 +43,12 @@ double drapeStep(const terrain::TerrainData& data) {
 // Cross-sections of the strip y in [y0, y1] from x0 to x1: the surface is
 // sampled every `step` m along both edges, and a cross-section kept only
 // where the edges, drawn straight from the last one kept, would stray more
-// than kDrapeTolerance from a sample (on a plane: one quad every 2 m; on the
-// rough road: closer where it is rougher).
+// than `tolerance` from a sample, and at least every `longest` m (on a
+// plane: one quad every 2 m near; on the rough road: closer where it is
+// rougher).
 constexpr double kDrapeTolerance = 0.004;  // m, well under the paint's 2 cm lift
-std::vector<double> drapeSections(const SurfaceSampler& ground, double step, double x0, double x1, double y0,
-                                  double y1) {
+std::vector<double> drapeSections(const SurfaceSampler& ground, double step, double x0, double x1, double y0, double y1,
+                                  double tolerance, double longest) {
   const int n = std::max(1, static_cast<int>(std::ceil((x1 - x0) / step)));
   std::vector<double> x(n + 1), z0(n + 1), z1(n + 1);
   for (int i = 0; i <= n; ++i) {
@@ -57,26 +61,38 @@ std::vector<double> drapeSections(const SurfaceSampler& ground, double step, dou
   auto straight = [&](int a, int b) {  // do both edges stay within tolerance of their chords from a to b?
     for (int i = a + 1; i < b; ++i) {
       const double w = (x[i] - x[a]) / (x[b] - x[a]);
-      if (std::abs(z0[a] + w * (z0[b] - z0[a]) - z0[i]) > kDrapeTolerance ||
-          std::abs(z1[a] + w * (z1[b] - z1[a]) - z1[i]) > kDrapeTolerance)
+      if (std::abs(z0[a] + w * (z0[b] - z0[a]) - z0[i]) > tolerance ||
+          std::abs(z1[a] + w * (z1[b] - z1[a]) - z1[i]) > tolerance)
         return false;
     }
     return true;
   };
-  const int longest = std::max(1, static_cast<int>(kPlaneStep / step));  // at most a plane's step between sections
+  const int samples = std::max(1, static_cast<int>(longest / step));  // at most `longest` between sections
   for (int i = 1; i <= n; ++i) {
-    if (i - from < longest && i < n && straight(from, i + 1)) continue;
+    if (i - from < samples && i < n && straight(from, i + 1)) continue;
     kept.push_back(x[i]);
     from = i;
   }
   return kept;
 }
 
+// How closely paint follows the surface, finest first: a level drawn with
+// tolerance t is lifted by t more (its chords may dip t below the surface)
+// and so strays up to 2 t from the finest; it is drawn from where 2 t is under
+// a pixel. Far from the camera the rough road's lines need a few sections
+// where near they need hundreds.
+struct DrapeLevel {
+  double tolerance, longest;  // m
+};
+constexpr std::array<DrapeLevel, 3> kDrapeLevels{{{kDrapeTolerance, kPlaneStep}, {0.02, 4 * kPlaneStep},
+                                                  {0.08, 16 * kPlaneStep}}};
+
 // Textured strip y in [y0, y1] from x0 to x1, lifted `lift` m above the
-// terrain, its cross-sections following the surface (drapeSections).
+// terrain, its cross-sections following the surface (drapeSections) as
+// closely as `level` asks.
 void addStrip(TriangleBuilder& tb, const SurfaceSampler& ground, double step, double x0, double x1, double y0,
-              double y1, double lift, const osg::Vec4& colour, float texRepeat) {
-  const std::vector<double> xs = drapeSections(ground, step, x0, x1, y0, y1);
+              double y1, double lift, const osg::Vec4& colour, float texRepeat, const DrapeLevel& level = kDrapeLevels[0]) {
+  const std::vector<double> xs = drapeSections(ground, step, x0, x1, y0, y1, level.tolerance, level.longest);
   auto at = [&](double x, double y) {
     return osg::Vec3(float(x), float(y), float(ground.heightOr(x, y, 0.0) + lift));
   };
@@ -124,26 +140,50 @@ osg::ref_ptr<osg::Node> makeRoadNode(const terrain::TerrainData& data, const Sur
     group->addChild(asphaltNode);
   }
 
-  // Paint in pieces of kPaintTile m along the road, so that culling skips what is out of view.
-  constexpr double kPaintTile = 50.0;
-  std::map<int, TriangleBuilder> paint;
-  auto paintAt = [&](double x) -> TriangleBuilder& { return paint[static_cast<int>(std::floor(x / kPaintTile))]; };
+  // Paint in pieces of kPaintTile m along the road, so that culling skips
+  // what is out of view, each piece draped as closely as its distance asks
+  // (kDrapeLevels).
+  constexpr double kPaintTile = 50.0, kPaintLift = 0.02;
   const osg::Vec4 white = rgba(0.93, 0.93, 0.9);
-  for (double side : {-1.0, 1.0}) {
-    const double y = road.centreY + side * (half - 0.5 * kLineWidth);
-    for (double x = road.startX; x < road.endX;) {
-      const double end = std::min(road.endX, (std::floor(x / kPaintTile) + 1) * kPaintTile);
-      addStrip(paintAt(x), ground, step, x, end, y - 0.5 * kLineWidth, y + 0.5 * kLineWidth, 0.02, white, 1.0f);
-      x = end;
+  auto paintPiece = [&](int tile, const DrapeLevel& level, TriangleBuilder& tb) {
+    const double tileStart = tile * kPaintTile, tileEnd = tileStart + kPaintTile, lift = kPaintLift + (level.tolerance - kDrapeTolerance);
+    for (double side : {-1.0, 1.0}) {
+      const double y = road.centreY + side * (half - 0.5 * kLineWidth);
+      const double x0 = std::max(road.startX, tileStart), x1 = std::min(road.endX, tileEnd);
+      if (x1 > x0) addStrip(tb, ground, step, x0, x1, y - 0.5 * kLineWidth, y + 0.5 * kLineWidth, lift, white, 1.0f, level);
     }
+    for (int lane = 1; lane < road.lanes; ++lane) {
+      const double y = road.centreY - half + lane * road.laneWidth;
+      for (double x = road.startX; x < road.endX; x += kDash + kGap)
+        if (std::floor(x / kPaintTile) == tile)
+          addStrip(tb, ground, step, x, std::min(x + kDash, road.endX), y - 0.5 * kLineWidth, y + 0.5 * kLineWidth,
+                   lift, white, 1.0f, level);
+    }
+  };
+  osg::ref_ptr<osg::StateSet> paintState = new osg::StateSet;
+  paintState->setAttributeAndModes(new osg::PolygonOffset(-1.0f, -4.0f), osg::StateAttribute::ON);
+  paintState->setRenderBinDetails(kBinRoadPaint, "RenderBin");
+  const int first = static_cast<int>(std::floor(road.startX / kPaintTile)),
+            last = static_cast<int>(std::floor(std::nextafter(road.endX, road.startX) / kPaintTile));
+  for (int tile = first; tile <= last; ++tile) {
+    osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+    float from = 0.0f;
+    for (std::size_t k = 0; k < kDrapeLevels.size(); ++k) {
+      TriangleBuilder tb;
+      paintPiece(tile, kDrapeLevels[k], tb);
+      if (tb.v->empty()) break;
+      osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+      geode->addDrawable(tb.build());
+      geode->setStateSet(paintState.get());
+      const float radius = geode->getBound().radius();
+      const float to = k + 1 < kDrapeLevels.size()
+                           ? radius + underAPixelFrom(float(2 * kDrapeLevels[k + 1].tolerance))
+                           : std::numeric_limits<float>::max();
+      if (to > from) lod->addChild(geode, from, to);
+      from = std::max(from, to);
+    }
+    if (lod->getNumChildren() > 0) group->addChild(lod);
   }
-  for (int lane = 1; lane < road.lanes; ++lane) {
-    const double y = road.centreY - half + lane * road.laneWidth;
-    for (double x = road.startX; x < road.endX; x += kDash + kGap)
-      addStrip(paintAt(x), ground, step, x, std::min(x + kDash, road.endX), y - 0.5 * kLineWidth,
-               y + 0.5 * kLineWidth, 0.02, white, 1.0f);
-  }
-  for (auto& [tile, tb] : paint) group->addChild(layer(tb, -4.0f, kBinRoadPaint));
   return group;
 }
 

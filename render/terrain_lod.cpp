@@ -41,6 +41,8 @@ constexpr float kFocal = 623.5f, kPixelError = 1.0f;
 // sphere: seen along the ground from a driver's eye 1.5 m up, a cell there is
 // about 5 pixels deep.
 constexpr float kDistancePerCell = 30.0f;
+// A tile without levels of its own is thinned far away from this many triangles up.
+constexpr std::size_t kThinFrom = 256;
 // A level worth having removes at least this share of the finer one's triangles.
 constexpr double kMinReduction = 0.5;
 
@@ -216,7 +218,7 @@ std::vector<TriangleBuilder> splitByCentroid(const TriangleBuilder& tb, float si
 // finer geometry: where its error is under kPixelError or kDistancePerCell
 // cells from the part's bounding sphere, whichever is nearer.
 float standInFrom(float radius, float cell, float error) {
-  return radius + std::min(kDistancePerCell * cell, error * kFocal / kPixelError);
+  return radius + std::min(kDistancePerCell * cell, underAPixelFrom(error));
 }
 
 // The part's full geometry as its nearest range draws it: in quarters
@@ -282,6 +284,8 @@ osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSe
 }
 
 }  // namespace
+
+float underAPixelFrom(float size) { return size * kFocal / kPixelError; }
 
 osg::ref_ptr<osg::Geometry> weldTriangles(const TriangleBuilder& tb) {
   const bool textured = tb.uv && tb.uv->size() == tb.v->size();
@@ -396,6 +400,29 @@ osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float ce
 }
 
 bool isDense(const TriangleBuilder& tb) { return tb.v->size() / 3 > kDenseTriangles; }
+
+osg::ref_ptr<osg::Node> thinnedWithDistance(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat) {
+  osg::ref_ptr<osg::Geometry> drawn = weldTriangles(tb);
+  std::size_t triangles = triangleCount(*drawn);
+  if (triangles < kThinFrom) return geodeOf(drawn.get(), state);
+  const LookOutline own({&tb});
+  const std::vector<std::uint8_t> places = own.places(tb);
+  const float radius = drawn->getBound().radius();
+  osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+  float from = 0.0f;
+  for (const float cell : kCells) {
+    float error = 0;
+    osg::ref_ptr<osg::Geometry> coarse = clusterByPlaces(tb, cell, texelRepeat, places, nullptr, &error);
+    if (double(triangleCount(*coarse)) > (1.0 - kMinReduction) * double(triangles)) continue;
+    const float switchAt = standInFrom(radius, cell, error);
+    if (switchAt > from) lod->addChild(geodeOf(drawn.get(), state), from, switchAt);
+    from = std::max(from, switchAt);
+    drawn = coarse;
+    triangles = triangleCount(*coarse);
+  }
+  lod->addChild(geodeOf(drawn.get(), state), from, std::numeric_limits<float>::max());
+  return lod;
+}
 
 osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,
                                    const LookOutline* look, const std::vector<ClusterMeans>* means, bool levels) {

@@ -30,6 +30,11 @@ struct ClusterKeyHash {
   }
 };
 
+// The distance (m) from which `size` m across the line of sight covers less
+// than a pixel (720 lines over a 60 deg field): where a simpler stand-in
+// that strays `size` from the finer geometry takes over.
+float underAPixelFrom(float size);
+
 // The builder's triangles as indexed geometry: corners equal in position,
 // normal, colour and texture coordinate become one vertex. The same picture.
 osg::ref_ptr<osg::Geometry> weldTriangles(const TriangleBuilder& tb);
@@ -104,6 +109,13 @@ osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float ce
 bool isDense(const TriangleBuilder& tb);
 osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,
                                    const LookOutline* look, const std::vector<ClusterMeans>* means, bool levels);
+// A tile that is not dense but still has triangles to spare far away (a
+// circuit's curbs: 1,500 triangles 800 m off): whole, drawn from its
+// stand-ins (its own outline kept) at the distances a dense tile's parts
+// take theirs. The corners where it meets its neighbours may move: only
+// for a layer drawn over another, where a slit shows the layer beneath,
+// not the sky.
+osg::ref_ptr<osg::Node> thinnedWithDistance(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat);
 inline osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat) {
   return groundTile(tb, state, texelRepeat, nullptr, nullptr, isDense(tb));
 }

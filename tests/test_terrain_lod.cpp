@@ -1,18 +1,24 @@
 // The ground's levels of detail (render/terrain_lod): welding changes no
 // corner, clustering keeps a surface where it was and the area it covers,
-// and a dense tile gets coarser levels farther out. No GL context needed.
+// and a dense tile gets coarser levels farther out; road paint and cones
+// thin with distance by under a pixel. No GL context needed.
 #include <gtest/gtest.h>
 
 #include <osg/Geode>
 #include <osg/LOD>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <tuple>
 #include <vector>
 
+#include "render/nodes.h"
+#include "render/surface_sampler.h"
 #include "render/terrain_lod.h"
+#include "render/terrain_surface.h"
 #include "terrain/terrain_file.h"
 #include "terrain/terrain_mesh.h"
 #include "test_files.h"
@@ -106,8 +112,32 @@ void drawnAt(const osg::Node* node, float d, std::vector<const osg::Geometry*>& 
 
 std::size_t triangles(const std::vector<const osg::Geometry*>& gs) {
   std::size_t n = 0;
-  for (const osg::Geometry* g : gs) n += indices(*g).size() / 3;
+  for (const osg::Geometry* g : gs)
+    for (unsigned k = 0; k < g->getNumPrimitiveSets(); ++k) n += g->getPrimitiveSet(k)->getNumIndices() / 3;
   return n;
+}
+
+// Checks that an LOD's ranges run from the camera out to infinity, each
+// starting where the last ends; gives the triangles it draws at the start of
+// each range, nearest first.
+std::vector<std::size_t> trianglesByRange(const osg::LOD& lod) {
+  EXPECT_EQ(lod.getMinRange(0), 0.0f);
+  EXPECT_EQ(lod.getMaxRange(lod.getNumChildren() - 1), std::numeric_limits<float>::max());
+  std::vector<std::size_t> out;
+  for (unsigned k = 0; k < lod.getNumChildren(); ++k) {
+    if (k > 0) {
+      EXPECT_EQ(lod.getMinRange(k), lod.getMaxRange(k - 1)) << "range " << k;
+    }
+    std::vector<const osg::Geometry*> drawn;
+    drawnAt(&lod, lod.getMinRange(k), drawn);
+    out.push_back(triangles(drawn));
+  }
+  return out;
+}
+
+// Whether each count is below the one before.
+bool fewerEachTime(const std::vector<std::size_t>& counts) {
+  return std::adjacent_find(counts.begin(), counts.end(), std::less_equal<>()) == counts.end();
 }
 
 }  // namespace
@@ -200,23 +230,16 @@ TEST(TerrainLod, ADenseTileGetsCoarserLevelsFartherOut) {
     auto* lod = dynamic_cast<osg::LOD*>(parts->getChild(i));
     ASSERT_NE(lod, nullptr);
     ASSERT_GE(lod->getNumChildren(), 2u) << "part " << i;
-    EXPECT_EQ(lod->getMinRange(0), 0.0f);
-    EXPECT_EQ(lod->getMaxRange(lod->getNumChildren() - 1), std::numeric_limits<float>::max());
-    std::size_t previous = std::numeric_limits<std::size_t>::max();
     for (unsigned k = 0; k < lod->getNumChildren(); ++k) {
-      if (k > 0) {
-        EXPECT_EQ(lod->getMinRange(k), lod->getMaxRange(k - 1));
-      }
-      // At the start of its range (the nearest range: at the camera, all in full).
       std::vector<const osg::Geometry*> drawn;
       drawnAt(lod, lod->getMinRange(k), drawn);
       ASSERT_FALSE(drawn.empty());
       for (const osg::Geometry* g : drawn) EXPECT_EQ(g->getStateSet(), state.get());
-      const std::size_t n = triangles(drawn);
-      EXPECT_LT(n, previous) << "part " << i << " level " << k;
-      previous = n;
-      if (k == 0) total += n;
     }
+    // At the start of each range (the nearest range: at the camera, all in full).
+    const std::vector<std::size_t> counts = trianglesByRange(*lod);
+    EXPECT_TRUE(fewerEachTime(counts)) << "part " << i;
+    total += counts[0];
   }
   EXPECT_EQ(total, std::size_t(2 * 300 * 300));  // the parts' full levels together: every triangle once
 }
@@ -396,5 +419,122 @@ TEST(TerrainLod, TheReliefAStandInTakesAwayDecidesWhereItIsUsed) {
     EXPECT_LT(lower[i]->getMaxRange(0), high[i]->getMaxRange(0)) << "part " << i;
     for (unsigned k = 0; k + 1 < high[i]->getNumChildren(); ++k)
       EXPECT_LE(lower[i]->getMaxRange(k), high[i]->getMaxRange(k)) << "part " << i << " level " << k;
+  }
+}
+
+// A tile too sparse for parts of its own, laid over another layer (a
+// circuit's curbs), is drawn whole near the camera and thinned far away:
+// ranges that join up and reach infinity, fewer triangles at each step; a
+// tile of a few triangles stays one geode.
+TEST(TerrainLod, ASparseTileIsThinnedOnlyFarAway) {
+  osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+  const osg::ref_ptr<osg::Node> few = thinnedWithDistance(grid(8, 1.0f), state.get(), kRepeat);
+  EXPECT_NE(few->asGeode(), nullptr);
+
+  const osg::ref_ptr<osg::Node> tile = thinnedWithDistance(grid(60, 0.5f), state.get(), kRepeat);
+  const auto* lod = dynamic_cast<const osg::LOD*>(tile.get());
+  ASSERT_NE(lod, nullptr);
+  ASSERT_GE(lod->getNumChildren(), 2u);
+  for (unsigned k = 0; k < lod->getNumChildren(); ++k)
+    EXPECT_EQ(lod->getChild(k)->asGeode()->getDrawable(0)->getStateSet(), state.get());
+  const std::vector<std::size_t> counts = trianglesByRange(*lod);
+  EXPECT_EQ(counts[0], std::size_t(2 * 60 * 60));  // at the camera: every triangle
+  EXPECT_TRUE(fewerEachTime(counts));
+}
+
+namespace {
+
+// z of a rough road: ripples along it, a gentle camber across.
+double roughRoad(double x, double y) { return 0.03 * std::sin(2.1 * x) + 0.015 * std::sin(7.3 * x + 1.0) + 0.01 * y; }
+
+}  // namespace
+
+// Road paint far away follows the road's relief more loosely, in fewer
+// triangles, but never sinks into it: every level of every piece, sampled
+// along its triangles' edges, stays above the surface by at least the
+// finest level's margin (its 2 cm lift less its 4 mm tolerance), and a
+// coarser level strays from that lift by under a pixel where it takes over.
+TEST(RoadPaint, FarPaintFollowsARoughRoadMoreLooselyAndNeverSinksIntoIt) {
+  using namespace bdfcar::terrain;
+  TerrainData road;
+  road.kind = TerrainKind::Heightfield;
+  road.dx = road.dy = 0.05;
+  road.x0 = -1.0;
+  road.y0 = -5.0;
+  road.cols = 2441;  // x to 121 m
+  road.rows = 201;   // y to 5 m
+  for (int r = 0; r < road.rows; ++r)
+    for (int c = 0; c < road.cols; ++c) road.heights.push_back(roughRoad(road.x0 + c * road.dx, road.y0 + r * road.dy));
+  road.road.present = true;
+  road.road.startX = 0.0;
+  road.road.endX = 120.0;
+  const TriangleMesh mesh = bdfcar::render::terrainSurface(road);
+  const SurfaceSampler ground(mesh);
+  const osg::ref_ptr<osg::Node> paint = makeRoadNode(road, ground);
+  const osg::Group* pieces = paint->asGroup();
+  ASSERT_NE(pieces, nullptr);
+  ASSERT_GE(pieces->getNumChildren(), 3u);  // 120 m in 50 m pieces
+  constexpr double kLift = 0.02, kFinest = 0.004;
+  for (unsigned i = 0; i < pieces->getNumChildren(); ++i) {
+    const auto* lod = dynamic_cast<const osg::LOD*>(pieces->getChild(i));
+    ASSERT_NE(lod, nullptr) << "piece " << i;
+    ASSERT_GE(lod->getNumChildren(), 2u) << "piece " << i;
+    EXPECT_TRUE(fewerEachTime(trianglesByRange(*lod))) << "piece " << i;
+    for (unsigned k = 0; k < lod->getNumChildren(); ++k) {
+      const osg::Geometry* g = lod->getChild(k)->asGeode()->getDrawable(0)->asGeometry();
+      const auto& v = vertices(*g);
+      double lowest = 1.0, stray = 0.0;
+      for (std::size_t t = 0; t + 2 < v.size(); t += 3)
+        for (int e = 0; e < 3; ++e)
+          for (int s = 0; s < 8; ++s) {
+            const osg::Vec3 p = v[t + e] + (v[t + (e + 1) % 3] - v[t + e]) * (s / 8.0f);
+            const double above = p.z() - *ground.height(p.x(), p.y());
+            lowest = std::min(lowest, above);
+            stray = std::max(stray, std::abs(above - kLift));
+          }
+      EXPECT_GE(lowest, kLift - kFinest - 1e-4) << "piece " << i << " level " << k;
+      if (k > 0) {
+        EXPECT_LE(underAPixelFrom(float(stray)), lod->getMinRange(k) - g->getBound().radius())
+            << "piece " << i << " level " << k;
+      }
+    }
+  }
+}
+
+// Far cones are drawn with fewer sides, each level from where it falls short
+// of the round cone (0.5 m tall on a 3 cm base, radius 0.15 m at its foot,
+// 0.025 m at its top) by under a pixel: sampled along its body's triangle
+// edges, no point lies outside the round cone, and the deepest shortfall is
+// under a pixel at the level's nearest distance; fewer triangles each level.
+TEST(ConeLod, FarConesHaveFewerSidesAndKeepTheirOutlineToAPixel) {
+  bdfcar::terrain::TerrainData plane;  // a level plane at z = 0
+  const bdfcar::terrain::TriangleMesh mesh = bdfcar::render::terrainSurface(plane);
+  const osg::ref_ptr<osg::Group> cones = makeConesNode({Eigen::Vector3d(0, 0, 0)}, SurfaceSampler(mesh));
+  ASSERT_EQ(cones->getNumChildren(), 1u);
+  const auto* lod = dynamic_cast<const osg::LOD*>(cones->getChild(0)->asGroup()->getChild(0));
+  ASSERT_NE(lod, nullptr);
+  ASSERT_GE(lod->getNumChildren(), 2u);
+  constexpr double kFoot = 0.03, kTop = 0.5, kR0 = 0.15, kR1 = 0.025;
+  EXPECT_TRUE(fewerEachTime(trianglesByRange(*lod)));
+  for (unsigned k = 0; k < lod->getNumChildren(); ++k) {
+    const osg::Geometry* g = lod->getChild(k)->asGeode()->getDrawable(0)->asGeometry();
+    const auto& v = vertices(*g);
+    double shortfall = 0.0;
+    int body = 0;
+    for (std::size_t t = 0; t + 2 < v.size(); t += 3)
+      for (int e = 0; e < 3; ++e)
+        for (int s = 0; s < 8; ++s) {
+          const osg::Vec3 p = v[t + e] + (v[t + (e + 1) % 3] - v[t + e]) * (s / 8.0f);
+          if (p.z() <= kFoot + 1e-4) continue;  // the base plate
+          ++body;
+          const double round = kR0 + (kR1 - kR0) * (p.z() - kFoot) / (kTop - kFoot);
+          const double off = round - std::hypot(p.x(), p.y());
+          EXPECT_GE(off, -1e-5) << "level " << k << " outside the round cone at z " << p.z();
+          shortfall = std::max(shortfall, off);
+        }
+    ASSERT_GT(body, 0);
+    if (k > 0) {  // the nearest level is the cone as it always was
+      EXPECT_LE(underAPixelFrom(float(shortfall)), lod->getMinRange(k) - g->getBound().radius()) << "level " << k;
+    }
   }
 }
