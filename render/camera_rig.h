@@ -12,10 +12,17 @@
 
 namespace bdfcar::render {
 
+// The haze (the scene's fog, by eye depth) from kHazeStart to kHazeEnd, m.
+// Deeper than its end everything is drawn in the fog's colour, which is the
+// clear colour: the far plane is put there, and what lies beyond it is
+// culled rather than drawn (at the rough road, a third of the grass's
+// drawables).
+constexpr double kHazeStart = 150.0, kHazeEnd = 1500.0;
+
 struct CameraPose {
   Eigen::Vector3d eye = Eigen::Vector3d::Zero(), centre = Eigen::Vector3d::UnitX(), up = Eigen::Vector3d::UnitZ();
   double fovYDeg = 45.0;  // vertical field of view
-  double zNear = 0.25, zFar = 2500.0;
+  double zNear = 0.25, zFar = kHazeEnd;
 };
 
 struct OrbitState {

@@ -30,6 +30,8 @@ osg::ref_ptr<osgViewer::Viewer> makeEmbeddedViewer(Scene::Impl& scene, int width
   camera->setClearColor(kSkyHorizon);
   camera->setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   camera->setSmallFeatureCullingPixelSize(-1.0f);  // never cull distant cones as "small"
+  // Past the far plane (the haze's end: camera_rig.h) nothing shows but the fog's colour.
+  camera->setCullingMode(camera->getCullingMode() | osg::CullSettings::FAR_PLANE_CULLING);
   scene.applyView(*camera, width, height);
   viewer->realize();
   return viewer;

@@ -26,8 +26,8 @@ Scene::Impl::Impl(const SceneConfig& cfg)
   // Haze towards the horizon colour hides the terrain's far edge.
   osg::ref_ptr<osg::Fog> fog = new osg::Fog;
   fog->setMode(osg::Fog::LINEAR);
-  fog->setStart(150.0f);
-  fog->setEnd(1500.0f);
+  fog->setStart(float(kHazeStart));
+  fog->setEnd(float(kHazeEnd));
   fog->setColor(kSkyHorizon);
   ss->setAttributeAndModes(fog.get());
 

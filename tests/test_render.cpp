@@ -349,6 +349,34 @@ TEST(Render, TheDrawLoadCountsTheTrianglesDrawn) {
 }
 #endif
 
+#ifndef BDFCAR_TEST_WINDOW
+// Past the haze's end everything is the fog's colour: a road whose markings
+// run on 4 km draws as many pieces as one ending 200 m past the haze (the
+// pieces beyond are culled, not drawn), and the same picture to a grey level.
+TEST(Render, WhatLiesPastTheHazeIsCulled) {
+  struct Drawn {
+    Frame frame;
+    DrawLoad load;
+  };
+  auto drawn = [](double roadEnd) {
+    SceneConfig cfg = testScene(/*hud=*/false);
+    cfg.terrain.road.endX = roadEnd;
+    Scene scene(cfg);
+    Renderer r(scene, 320, 180);
+    Drawn d{frameAt(scene, r, 1.0), {}};
+    d.load = r.lastLoad();
+    return d;
+  };
+  const Drawn past = drawn(kHazeEnd + 200.0), far = drawn(4000.0);
+  EXPECT_EQ(far.load.drawables, past.load.drawables);  // (the asphalt under the paint is one ribbon, drawn whole)
+  int worst = 0;
+  for (int y = 0; y < past.frame.height; ++y)
+    for (int x = 0; x < past.frame.width; ++x)
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(past.frame.pixel(x, y)[c]) - int(far.frame.pixel(x, y)[c])));
+  EXPECT_LE(worst, 1);
+}
+#endif
+
 TEST(Render, StartUpCheckFailuresAreErrorsNotBlackPictures) {
   EXPECT_THROW(requireGlContext(nullptr, "test"), RenderError);
   try {
