@@ -249,11 +249,13 @@ osg::ref_ptr<osg::Node> nearRange(const TriangleBuilder& part, std::size_t level
   return group;
 }
 
-// One part: its welded geometry near (nearRange), then each stand-in that
-// pays for itself, from standInFrom on (at once where it has no error). The
-// full geometry is welded only where it is drawn whole (nearRange cuts it).
+// One part: its welded geometry near (nearRange where `cutNearest`, else
+// whole), then each stand-in that pays for itself, from standInFrom on (at
+// once where it has no error). The full geometry is welded only where it is
+// drawn whole (nearRange cuts it).
 osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSet* state, float texelRepeat,
-                                       const LookOutline& look, const std::vector<ClusterMeans>& means) {
+                                       const LookOutline& look, const std::vector<ClusterMeans>& means,
+                                       bool cutNearest = true) {
   osg::ref_ptr<osg::LOD> lod = new osg::LOD;
   osg::BoundingBox box;  // as the welded geometry's bound: the same corners
   for (const osg::Vec3& p : *part.v) box.expandBy(p);
@@ -270,8 +272,9 @@ osg::ref_ptr<osg::Node> partWithLevels(const TriangleBuilder& part, osg::StateSe
     if (error > 0.0f) {
       const float switchAt = std::max(from, standInFrom(radius, cell, error));
       if (switchAt > from)
-        lod->addChild(drawn ? osg::ref_ptr<osg::Node>(geodeOf(drawn.get(), state))
-                            : nearRange(part, level, state, texelRepeat, look, means),
+        lod->addChild(drawn        ? osg::ref_ptr<osg::Node>(geodeOf(drawn.get(), state))
+                      : cutNearest ? nearRange(part, level, state, texelRepeat, look, means)
+                                   : osg::ref_ptr<osg::Node>(geodeOf(weldTriangles(part).get(), state)),
                       from, switchAt);
       from = switchAt;
     }
@@ -402,26 +405,10 @@ osg::ref_ptr<osg::Geometry> clusterTriangles(const TriangleBuilder& tb, float ce
 bool isDense(const TriangleBuilder& tb) { return tb.v->size() / 3 > kDenseTriangles; }
 
 osg::ref_ptr<osg::Node> thinnedWithDistance(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat) {
-  osg::ref_ptr<osg::Geometry> drawn = weldTriangles(tb);
-  std::size_t triangles = triangleCount(*drawn);
-  if (triangles < kThinFrom) return geodeOf(drawn.get(), state);
+  if (tb.v->size() / 3 < kThinFrom) return geodeOf(weldTriangles(tb).get(), state);
   const LookOutline own({&tb});
   const std::vector<std::uint8_t> places = own.places(tb);
-  const float radius = drawn->getBound().radius();
-  osg::ref_ptr<osg::LOD> lod = new osg::LOD;
-  float from = 0.0f;
-  for (const float cell : kCells) {
-    float error = 0;
-    osg::ref_ptr<osg::Geometry> coarse = clusterByPlaces(tb, cell, texelRepeat, places, nullptr, &error);
-    if (double(triangleCount(*coarse)) > (1.0 - kMinReduction) * double(triangles)) continue;
-    const float switchAt = standInFrom(radius, cell, error);
-    if (switchAt > from) lod->addChild(geodeOf(drawn.get(), state), from, switchAt);
-    from = std::max(from, switchAt);
-    drawn = coarse;
-    triangles = triangleCount(*coarse);
-  }
-  lod->addChild(geodeOf(drawn.get(), state), from, std::numeric_limits<float>::max());
-  return lod;
+  return partWithLevels(tb, state, texelRepeat, own, clusterMeans({&tb}, {&places}), /*cutNearest=*/false);
 }
 
 osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,

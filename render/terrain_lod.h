@@ -110,9 +110,8 @@ bool isDense(const TriangleBuilder& tb);
 osg::ref_ptr<osg::Node> groundTile(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat,
                                    const LookOutline* look, const std::vector<ClusterMeans>* means, bool levels);
 // A tile that is not dense but still has triangles to spare far away (a
-// circuit's curbs: 1,500 triangles 800 m off): whole, drawn from its
-// stand-ins (its own outline kept) at the distances a dense tile's parts
-// take theirs. The corners where it meets its neighbours may move: only
+// circuit's curbs: 1,500 triangles 800 m off): whole, with the stand-ins
+// (its own outline kept) a dense tile's part takes, at the same distances. The corners where it meets its neighbours may move: only
 // for a layer drawn over another, where a slit shows the layer beneath,
 // not the sky.
 osg::ref_ptr<osg::Node> thinnedWithDistance(const TriangleBuilder& tb, osg::StateSet* state, float texelRepeat);
