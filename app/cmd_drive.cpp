@@ -34,6 +34,7 @@ struct DriveArgs {
   std::string record, replay, telemetry, laps, screenshot, mappings, recordDir = defaultRecordDir(), size = "1280x720";
   double seconds = 0;
   int msaa = -1;  // --msaa; -1: automatic
+  std::string renderScale = "auto";
   bool batch = false, noVsync = false, noSound = false, replayAnyway = false, scenarioGiven = false;
   ScenarioOverrides overrides;
 };
@@ -102,6 +103,7 @@ int runDrive(const DriveArgs& a) {
     io.seconds = a.seconds;
     io.vsync = !a.noVsync;
     io.multisample = a.msaa;
+    io.renderScale = a.renderScale == "auto" ? 0.0 : std::stod(a.renderScale);
     io.sound = !a.noSound;
     io.screenshot = a.screenshot;
     if (!parseSize(a.size, io.width, io.height)) throw std::runtime_error("--size: expected WIDTHxHEIGHT");
@@ -185,6 +187,11 @@ void addDriveCommand(CLI::App& app, CommandList& commands) {
                   "Multisampling (anti-aliasing) samples, 0 for none; default: 4 on a GPU, none on software GL (where "
                   "each sample costs as much as a frame)")
       ->check(CLI::Range(0, 16));
+  cmd->add_option("--render-scale", a->renderScale,
+                  "Resolution of the 3D view, of the window's width and height (the HUD stays sharp): 0.5 to 1, or "
+                  "auto (default): on a GPU lowered in steps while frames take longer than 1/30 s and raised again "
+                  "when they would not; on software GL full (stretching costs it what it saves)")
+      ->check(CLI::IsMember({"auto"}) | CLI::Range(0.5, 1.0));
   cmd->add_flag("--no-sound", a->noSound, "No engine, tyre or wind sound (default: played on the default sound device)");
   cmd->add_option("--screenshot", a->screenshot, "Save the last frame as PNG");
   cmd->add_option("--mappings", a->mappings, "Folder of input mapping files (*.toml; default: the shipped ones)")

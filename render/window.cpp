@@ -3,13 +3,17 @@
 #include <GL/gl.h>
 #include <SDL.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "render/embedded_viewer.h"
 #include "render/gl_check.h"
 #include "render/library_versions.h"
 #include "render/png_writer.h"
+#include "render/resolution_governor.h"
+#include "render/scaled_world.h"
 
 namespace bdfcar::render {
 
@@ -19,6 +23,9 @@ struct Window::Impl {
   SDL_Window* window = nullptr;
   SDL_GLContext context = nullptr;
   osg::ref_ptr<osgViewer::Viewer> viewer;
+  std::unique_ptr<ScaledWorld> scaled;
+  std::optional<ResolutionGovernor> governor;  // with renderScale 0
+  double fixedScale = 1;
   std::string renderer, screenshotPath;
   int width = 0, height = 0, samples = 0;
 };
@@ -105,6 +112,17 @@ Window::Window(Scene& scene, const WindowOptions& options) : impl_(std::make_uni
     if (SDL_GL_GetAttribute(SDL_GL_MULTISAMPLESAMPLES, &impl_->samples) != 0) impl_->samples = 0;
     SDL_GL_GetDrawableSize(impl_->window, &impl_->width, &impl_->height);
     impl_->viewer = makeEmbeddedViewer(impl_->scene, impl_->width, impl_->height);
+    Scene::Impl& s = impl_->scene;
+    impl_->scaled = std::make_unique<ScaledWorld>(s.sky.get(), s.world.get(), s.config.hud ? s.hud.node() : nullptr);
+    impl_->viewer->setSceneData(impl_->scaled->root());
+    // Automatic: on a GPU the world's resolution follows the frame rate. Not on
+    // software GL, where stretching the picture over the window costs as much
+    // as the pixels saved (llvmpipe, 1280x720: the stretch 27 M instructions a
+    // frame, the whole world's shading at full size 34 M; docs/RESULTS.md 8).
+    if (options.renderScale > 0)
+      impl_->fixedScale = options.renderScale;
+    else if (!isSoftwareRenderer(impl_->renderer))
+      impl_->governor.emplace();
   } catch (...) {
     SDL_GL_DeleteContext(impl_->context);
     SDL_DestroyWindow(impl_->window);
@@ -147,6 +165,8 @@ WindowEvents Window::takeEvents() {
 void Window::present(Frame* capture) {
   SDL_GL_MakeCurrent(impl_->window, impl_->context);
   SDL_GL_GetDrawableSize(impl_->window, &impl_->width, &impl_->height);
+  const auto t0 = std::chrono::steady_clock::now();
+  impl_->scaled->set(impl_->governor ? impl_->governor->scale() : impl_->fixedScale, impl_->width, impl_->height);
   drawFrame(*impl_->viewer, impl_->scene, impl_->width, impl_->height);
   if (capture || !impl_->screenshotPath.empty()) {
     Frame f = readBackBuffer(impl_->width, impl_->height);
@@ -158,12 +178,15 @@ void Window::present(Frame* capture) {
     if (capture) *capture = std::move(f);
   }
   SDL_GL_SwapWindow(impl_->window);
+  if (impl_->governor)
+    impl_->governor->frame(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 void Window::screenshotNextFrame(const std::string& pngPath) { impl_->screenshotPath = pngPath; }
 int Window::width() const { return impl_->width; }
 int Window::height() const { return impl_->height; }
 const std::string& Window::glRenderer() const { return impl_->renderer; }
+double Window::worldScale() const { return impl_->scaled->scale(); }
 int Window::samples() const { return impl_->samples; }
 void Window::setTitle(const std::string& title) { SDL_SetWindowTitle(impl_->window, title.c_str()); }
 

@@ -29,6 +29,11 @@ struct WindowOptions {
   // software GL (llvmpipe pays for every sample: the proving ground drew at
   // 72 ms a frame with 4, 26 ms without).
   int multisample = -1;
+  // Of the width and height, the resolution the world is drawn at (the HUD
+  // always at full): 1 full, down to 0.5; 0: on a GPU chosen every few frames
+  // to keep 30 fps (render/resolution_governor.h), on software GL full (its
+  // stretch over the window costs what the fewer pixels save).
+  double renderScale = 1;
 };
 
 class Window {
@@ -57,6 +62,7 @@ class Window {
   int width() const;   // drawable size in pixels, as of the last present()
   int height() const;
   const std::string& glRenderer() const;
+  double worldScale() const;  // the scale the last frame's world was drawn at
   int samples() const;  // multisampling samples of the context made (0: none)
   void setTitle(const std::string& title);
 

@@ -293,20 +293,35 @@ bench_table() {
   echo "Command: \`build/app/bdfcar drive --vehicle assets/vehicles/paper.toml --seconds $drive_seconds\`"
   echo "(under \`xvfb-run -a -s '-screen 0 1280x720x24'\` when there is no display: software GL, no"
   echo "multisampling (\`--msaa\`: none on software GL unless asked), the sound through SDL's dummy audio driver)."
-  echo "The default scene: the proving ground (drive_powertrain.toml), sound, lap timing and the pause menu on."
+  echo "The default scene: the proving ground (drive_powertrain.toml), sound, lap timing and the pause menu on;"
+  echo "Mesa's rasteriser with a thread a core, below the tick's priority; the world at full resolution"
+  echo "(\`--render-scale auto\`: on software GL stretching a smaller picture costs what it saves)."
+  echo
+  # The drive, or a line saying why there is none.
+  drive() {
+    local cmd=("$build/app/bdfcar" drive --vehicle assets/vehicles/paper.toml --size 1280x720 "$@")
+    if [ -n "${DISPLAY:-}" ]; then
+      "${cmd[@]}" 2>&1 | grep -A4 '^loop:' || echo "(the drive did not report loop statistics)"
+    elif command -v xvfb-run > /dev/null; then
+      # No sound card there either: SDL's dummy audio driver pulls the sound at
+      # the real rate, so the synthesiser runs as it would on a desktop.
+      SDL_AUDIODRIVER=${SDL_AUDIODRIVER:-dummy} xvfb-run -a -s '-screen 0 1280x720x24' "${cmd[@]}" 2>&1 |
+        grep -A4 '^loop:' || echo "(the drive did not report loop statistics)"
+    else
+      echo "(skipped: no display and no xvfb-run)"
+    fi
+  }
+  echo '```'
+  drive --seconds "$drive_seconds"
+  echo '```'
+  echo
+  echo "The same drive for $((drive_seconds / 2)) s, then again with one rasteriser thread (\`LP_NUM_THREADS=1\`, the"
+  echo "loop's setting until issue 30's frame-rate work), one after the other on the same machine: frames"
+  echo "against the tick's jitter."
   echo
   echo '```'
-  drive=("$build/app/bdfcar" drive --vehicle assets/vehicles/paper.toml --seconds "$drive_seconds" --size 1280x720)
-  if [ -n "${DISPLAY:-}" ]; then
-    "${drive[@]}" 2>&1 | grep -A3 '^loop:' || echo "(the drive did not report loop statistics)"
-  elif command -v xvfb-run > /dev/null; then
-    # No sound card there either: SDL's dummy audio driver pulls the sound at
-    # the real rate, so the synthesiser runs as it would on a desktop.
-    SDL_AUDIODRIVER=${SDL_AUDIODRIVER:-dummy} xvfb-run -a -s '-screen 0 1280x720x24' "${drive[@]}" 2>&1 |
-      grep -A3 '^loop:' || echo "(the drive did not report loop statistics)"
-  else
-    echo "(skipped: no display and no xvfb-run)"
-  fi
+  drive --seconds "$((drive_seconds / 2))" | sed -n 1,2p
+  LP_NUM_THREADS=1 drive --seconds "$((drive_seconds / 2))" | sed -n 1,2p
   echo '```'
   echo
   echo "The car's sound (audio/, issue 30) is rendered on SDL's audio thread, not the tick: the tick only"

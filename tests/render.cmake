@@ -34,3 +34,7 @@ target_compile_definitions(test_terrain_lod PRIVATE BDFCAR_SOURCE_DIR="${PROJECT
 # Background priorities of encoders and drawing threads (no GL).
 bdfcar_test(test_thread_priority test_thread_priority.cpp)
 target_link_libraries(test_thread_priority PRIVATE bdfcar_render_output)
+
+# The drive window's choice of the world's resolution from frame times (no GL).
+bdfcar_test(test_resolution_governor test_resolution_governor.cpp)
+target_link_libraries(test_resolution_governor PRIVATE bdfcar_render_output)

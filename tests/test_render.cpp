@@ -411,6 +411,61 @@ TEST(Render, WindowMultisamplesOnlyWhereItIsCheap) {
   Window asked(scene, o);
   EXPECT_TRUE(asked.samples() == 4 || asked.samples() == 0) << asked.samples();
 }
+
+// The drive's reduced resolution (WindowOptions::renderScale): the world drawn
+// at half the width and height and stretched is the full-resolution picture,
+// blurred; the HUD over it is drawn at full resolution, as sharp as before.
+TEST(Render, AWorldAtHalfResolutionIsTheSamePictureStretchedUnderASharpHud) {
+  setenv("SDL_VIDEODRIVER", "offscreen", 1);
+  Scene scene(testScene());
+  const SyntheticFrame s = syntheticLaneChange(laneChange(), 2.0);
+  scene.update(s.view, s.hud);
+  WindowOptions o;
+  o.width = 320;
+  o.height = 180;
+  o.vsync = false;
+  o.multisample = 0;
+  Frame full, half;
+  {
+    Window w(scene, o);
+    w.present(&full);
+    EXPECT_EQ(w.worldScale(), 1.0);
+  }
+  o.renderScale = 0.5;
+  Window w(scene, o);
+  w.present(&half);
+  EXPECT_EQ(w.worldScale(), 0.5);
+  ASSERT_EQ(half.width, 320);
+  ASSERT_EQ(half.height, 180);
+  // Mean difference of the two pictures over a region, per channel, of 4x4 blocks' means.
+  auto blockDifference = [&](double x0, double x1, double y0, double y1, int block) {
+    double sum = 0;
+    int n = 0;
+    for (int by = int(y0 * 180); by + block <= int(y1 * 180); by += block)
+      for (int bx = int(x0 * 320); bx + block <= int(x1 * 320); bx += block)
+        for (int c = 0; c < 3; ++c) {
+          double a = 0, b = 0;
+          for (int y = by; y < by + block; ++y)
+            for (int x = bx; x < bx + block; ++x) {
+              a += full.pixel(x, y)[c];
+              b += half.pixel(x, y)[c];
+            }
+          sum += std::abs(a - b) / (block * block);
+          ++n;
+        }
+    return sum / n;
+  };
+  // The world, the whole frame's lower part (road, cones, car), at 4x4 blocks:
+  // the same picture to a few levels of 255, the edges included.
+  EXPECT_LT(blockDifference(0, 1, 0.3, 1, 4), 6.0);
+  EXPECT_LT(blockDifference(0.9, 1, 0.3, 1, 4), 8.0);  // no stale texels along the right edge
+  // The car is where it was, as big.
+  const int paintFull = countPixels(full, 0.3, 0.7, 0.35, 0.95, isPaint);
+  const int paintHalf = countPixels(half, 0.3, 0.7, 0.35, 0.95, isPaint);
+  EXPECT_NEAR(paintHalf, paintFull, 0.15 * paintFull);
+  // The HUD's top-left panel, pixel for pixel: its text is not blurred.
+  EXPECT_LT(blockDifference(0.04, 0.3, 0.04, 0.28, 1), 2.0);
+}
 #else
 TEST(Render, GlCallsResolveToOsMesaInTheHeadlessExecutable) {
   // The link-order trap: if glvnd's libGL came first, gl* would resolve there and frames would be black.

@@ -63,7 +63,7 @@ void DrawThread::loop() {
     scene_.update(view, hud);
     window_.present();
     std::lock_guard<std::mutex> lock(statsMutex_);
-    stats_.frame(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    stats_.frame(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), window_.worldScale());
   }
   if (!screenshot_.empty()) {
     window_.screenshotNextFrame(screenshot_);
