@@ -1,9 +1,10 @@
 // How many pixels the world is drawn with in a window that must keep its frame
-// rate: on software GL (Mesa's llvmpipe) most of a frame is per-pixel work
-// (the proving ground at 1280x720: 38 ms a frame in the drive, 15 ms at
-// 640x360), so drawing the 3D view at 0.7 of the width and height and
-// stretching it over the window costs about half. A GPU meets the budget at
-// full size and stays there. No GL here: the choice from frame times only.
+// rate: a GPU short of fill rate (a large or high-density screen) draws the 3D
+// view at 0.7 of the width and height for about half the pixel work, and its
+// stretch over the window costs next to nothing; a GPU that meets the budget
+// stays at full size. Not used on software GL, where the stretch costs what
+// the smaller world saves (render/window.cpp). No GL here: the choice from
+// frame times only.
 #pragma once
 
 #include <array>

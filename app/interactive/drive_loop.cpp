@@ -20,8 +20,9 @@ namespace bdfcar::app {
 LoopStats runInteractive(DriveSession& session, const InteractiveOptions& opt, std::optional<MenuChoice>* relaunch) {
   // With software GL (Mesa llvmpipe, no GPU) the rasteriser's threads, one a
   // core, share the cores with the tick at a lower priority (draw_thread.cpp):
-  // on two cores the proving ground draws at 44 fps against 30 with one
-  // thread, the tick's period p99 12.4 ms against 11.8, no overruns either way.
+  // on two cores the proving ground drew at 44 fps against 30 with one thread
+  // (three runs each, alternated), the tick's period p99 12.4 ms against 11.8,
+  // no overruns either way (docs/RESULTS.md 8).
   // LP_NUM_THREADS, when set, still decides.
   LoopStats stats;
   std::mutex statsMutex;

@@ -24,7 +24,7 @@ struct InteractiveOptions {
   int width = 1280, height = 720;
   bool vsync = true;
   int multisample = -1;  // MSAA samples; -1: 4 on a GPU, none on software GL
-  double renderScale = 0;  // the world's resolution (render::WindowOptions); 0: kept at 30 fps
+  double renderScale = 0;  // the world's resolution (render::WindowOptions); 0: automatic
   bool sound = true;                   // the car's sound on the sound card (audio/), when there is one
   std::string screenshot;              // PNG of the last frame, if set
   bool quitAtEnd = false;              // close when the scenario's duration is reached

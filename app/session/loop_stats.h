@@ -25,7 +25,6 @@ class LoopStats {
   Percentiles tickPeriod() const { return percentiles(periods_); }
   Percentiles physics() const { return percentiles(physics_); }
   Percentiles render() const { return percentiles(render_); }
-  Percentiles worldScale() const { return percentiles(scales_); }
 
  private:
   std::vector<double> periods_, physics_, render_, scales_;
