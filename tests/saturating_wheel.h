@@ -21,7 +21,10 @@ using integ::Vec;
 // s = C (R w' - x' - u(t)) / F0, pushes the carriage and brakes the wheel.
 class SaturatingWheel final : public integ::Dae {
  public:
-  SaturatingWheel(std::vector<int> fast, double roadAmplitude) : fast_(std::move(fast)), amplitude_(roadAmplitude) {}
+  // parts: the fast column's slip-force share given analytically
+  // (Dae::fastColumnParts), as a vehicle's tyres give theirs.
+  SaturatingWheel(std::vector<int> fast, double roadAmplitude, bool parts = false)
+      : fast_(std::move(fast)), amplitude_(roadAmplitude), parts_(parts) {}
   integ::DaeSizes sizes() const override { return {3, 3, 1}; }
   void retract(const Vec& q, const Vec& dq, Vec& out) const override { out = q + dq; }
   void localCoordinates(const Vec& base, const Vec& q, Vec& out) const override { out = q - base; }
@@ -40,8 +43,23 @@ class SaturatingWheel final : public integ::Dae {
     return kF0 * s / std::sqrt(1.0 + s * s);
   }
 
+  bool hasFastColumnParts() const override { return parts_ && !fast_.empty(); }
+  // dF/dv_k of the slip force at the last residual's state: F0 s / sqrt(1 + s^2)
+  // has the slope C R (1 + s^2)^-3/2 in the spin rate.
+  void fastColumnParts(double t, integ::Mat& parts) override {
+    parts.setZero(3, static_cast<int>(fast_.size()));
+    const double s = kC * (kR * last_(1) - last_(0) - road(t)) / kF0;
+    const double slope = kC * kR / std::pow(1.0 + s * s, 1.5);
+    for (size_t k = 0; k < fast_.size(); ++k) {
+      if (fast_[k] != 1) continue;
+      parts(0, static_cast<int>(k)) = -slope;
+      parts(1, static_cast<int>(k)) = kR * slope;
+    }
+  }
+
   integ::EvalStatus residual(double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                              integ::Residual& out, bool withConstraints, integ::Message&) override {
+    last_ = v;
     const double F = slipForce(v(0), v(1), t);
     out.F(0) = kM * a(0) + kDamping * (v(0) - 15.0) - F;  // pulled towards 15 m/s
     out.F(1) = kI * a(1) + kR * F;
@@ -59,6 +77,8 @@ class SaturatingWheel final : public integ::Dae {
  private:
   std::vector<int> fast_;
   double amplitude_;
+  bool parts_;
+  Vec last_ = Vec::Zero(3);  // the last residual's velocities
 };
 
 }  // namespace bdfcar::test

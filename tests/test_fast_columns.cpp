@@ -2,10 +2,14 @@
 // whole-Jacobian rescue it replaces, on a system built to stall Newton the
 // way a tyre does on a rough road (saturating_wheel.h). Both rescues iterate
 // each stalled step to tolerance, so they must give the same motion; the fast
-// one must do it for a fraction of the residual evaluations.
+// one must do it for a fraction of the residual evaluations. The columns
+// given by the force law (Dae::fastColumnParts) in place of finite
+// differences must rescue to the same motion with no residual at all.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "integrator/bdf.h"
@@ -22,8 +26,8 @@ struct WheelRun {
   integ::Counters counters;
 };
 
-WheelRun run(std::vector<int> fast, int newtonIterations, double roadAmplitude) {
-  SaturatingWheel dae(std::move(fast), roadAmplitude);
+WheelRun run(std::vector<int> fast, int newtonIterations, double roadAmplitude, bool parts = false) {
+  SaturatingWheel dae(std::move(fast), roadAmplitude, parts);
   integ::BdfOptions o;
   o.newtonIterations = newtonIterations;
   integ::BdfIntegrator bdf(dae, o);
@@ -40,6 +44,17 @@ WheelRun run(std::vector<int> fast, int newtonIterations, double roadAmplitude) 
   }
   r.counters = bdf.counters();
   return r;
+}
+
+// The largest difference between two runs of the carriage's speed and of
+// the wheel's rim speed (m/s).
+std::pair<double, double> worstApart(const WheelRun& a, const WheelRun& b) {
+  double carriage = 0, rim = 0;
+  for (size_t i = 0; i < std::min(a.v.size(), b.v.size()); ++i) {
+    carriage = std::max(carriage, std::abs(a.v[i](0) - b.v[i](0)));
+    rim = std::max(rim, std::abs(a.v[i](1) - b.v[i](1)) * SaturatingWheel::kR);
+  }
+  return {carriage, rim};
 }
 
 }  // namespace
@@ -60,11 +75,7 @@ TEST(FastColumns, RescueGivesTheWholeJacobianRescuesMotionForAFractionOfTheResid
   EXPECT_GT(fast.counters.columnRefreshes, 30);
   // ... and both rescues land on the same solution of every step, to a few
   // Newton tolerances (1e-6 on the corrections).
-  double worstCarriage = 0, worstSpin = 0;
-  for (size_t i = 0; i < whole.v.size(); ++i) {
-    worstCarriage = std::max(worstCarriage, std::abs(whole.v[i](0) - fast.v[i](0)));
-    worstSpin = std::max(worstSpin, std::abs(whole.v[i](1) - fast.v[i](1)) * SaturatingWheel::kR);
-  }
+  const auto [worstCarriage, worstSpin] = worstApart(whole, fast);
   EXPECT_LT(worstCarriage, 1e-4) << "m/s";
   EXPECT_LT(worstSpin, 1e-3) << "m/s at the rim";
   // The fast rescue evaluates 1 + 2 residuals per refresh instead of 1 + 2 nv.
@@ -84,4 +95,23 @@ TEST(FastColumns, TheDefaultPolicyEvaluatesTheWholeJacobianOnlyWhenDue) {
   // the carriage is the same to well within the road's 0.4 m/s jumps.
   const WheelRun converged = run({1}, 0, 0.4);
   for (size_t i = 0; i < fast.v.size(); ++i) EXPECT_NEAR(fast.v[i](0), converged.v[i](0), 0.01) << "step " << i;
+}
+
+TEST(FastColumns, ColumnsFromTheForceLawRescueAsFiniteDifferencesDoWithoutTheirResiduals) {
+  // The slip force's slope given analytically (Dae::fastColumnParts) in place
+  // of a residual per column, Newton to tolerance at every step as in the
+  // first test: the same motion to a few Newton tolerances, and no residual
+  // for a refresh.
+  const WheelRun differences = run({1}, 0, 0.05);
+  const WheelRun analytic = run({1}, 0, 0.05, true);
+  ASSERT_EQ(analytic.v.size(), 300u);
+  ASSERT_EQ(differences.v.size(), 300u);
+  EXPECT_GT(analytic.counters.rescues, 30);
+  EXPECT_GT(analytic.counters.columnRefreshes, 30);
+  const auto [worstCarriage, worstSpin] = worstApart(analytic, differences);
+  EXPECT_LT(worstCarriage, 1e-4) << "m/s";
+  EXPECT_LT(worstSpin, 1e-3) << "m/s at the rim";
+  // Finite differences: a residual per refresh; the force law: none.
+  EXPECT_GE(differences.counters.jacobianResiduals - analytic.counters.jacobianResiduals,
+            differences.counters.columnRefreshes - differences.counters.jacobians);
 }

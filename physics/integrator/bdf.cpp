@@ -55,6 +55,8 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   U_.setZero(nv, m);
   Z_.setZero(n, m);
   S_.setZero(m, m);
+  slowFv_.setZero(nv, m);
+  partsNow_.setZero(nv, m);
   sLu_ = Eigen::PartialPivLU<Mat>(m);
   w_.setZero(m);
   w2_.setZero(m);
@@ -152,6 +154,21 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
     msg = ws_.msg;
     return st;
   }
+  // The fast columns' slow rest, from the fast part at the blocks' own point
+  // (their last residual was at a perturbed one).
+  fastParts_ = false;
+  if (opt_.fastColumnRescue && dae_.hasFastColumnParts()) {
+    st = dae_.residual(t, q_, v_, a_, lam_, ws_.r0, false, ws_.msg);
+    ++cnt;
+    if (st != EvalStatus::Ok) {
+      msg = ws_.msg;
+      return st;
+    }
+    dae_.fastColumnParts(t, partsNow_);
+    const std::vector<int>& fast = dae_.fastColumns();
+    for (int k = 0; k < static_cast<int>(fast.size()); ++k) slowFv_.col(k) = dx_.Fv.col(fast[k]) - partsNow_.col(k);
+    fastParts_ = true;
+  }
   ++st_->counters.jacobians;
   haveBlocks_ = true;
   stepsSinceJacobian_ = 0;
@@ -183,19 +200,24 @@ void BdfIntegrator::factorize(double hp) {
 // and an n x n x m product, no LU of A.
 EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual& base, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
-  dae_.retract(node(0).q, d_, q_);
-  const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, st_->counters.jacobianResiduals);
-  if (st != EvalStatus::Ok) {
-    msg = ws_.msg;
-    return st;
+  const std::vector<int>& fast = dae_.fastColumns();
+  const int m = static_cast<int>(fast.size()), nv = n_.nv;
+  if (fastParts_) {  // the force laws' part at this iterate (its residual's state)
+    dae_.fastColumnParts(t, partsNow_);
+    for (int k = 0; k < m; ++k) dx_.Fv.col(fast[k]) = slowFv_.col(k) + partsNow_.col(k);
+  } else {
+    dae_.retract(node(0).q, d_, q_);
+    const EvalStatus st = fastVelocityColumns(dae_, t, q_, v_, a_, lam_, base, dx_, ws_, st_->counters.jacobianResiduals);
+    if (st != EvalStatus::Ok) {
+      msg = ws_.msg;
+      return st;
+    }
   }
   ++st_->counters.columnRefreshes;
   if (std::abs(hp - factorizedHPrime_) > 1e-9 * hp) {
     factorize(hp);  // a new step size: the whole matrix anyway
     return EvalStatus::Ok;
   }
-  const std::vector<int>& fast = dae_.fastColumns();
-  const int m = static_cast<int>(fast.size()), nv = n_.nv;
   for (int k = 0; k < m; ++k) {
     U_.col(k) = hp * (dx_.Fv.col(fast[k]) - fastBaseFv_.col(k));
     A_.col(fast[k]).head(nv) = Fa_.col(fast[k]) + hp * dx_.Fv.col(fast[k]) + (hp * hp) * dx_.Fq.col(fast[k]);

@@ -131,6 +131,11 @@ class BdfIntegrator final : public Integrator {
   Mat fastBaseFv_, U_, Z_, S_;
   Eigen::PartialPivLU<Mat> sLu_;
   Vec w_, w2_;
+  // Where the DAE gives its fast columns' fast part (Dae::fastColumnParts):
+  // the rest of each fast column at the Jacobian (slowFv_), which a refresh
+  // adds to the part at the iterate (partsNow_) in place of finite differences.
+  bool fastParts_ = false;
+  Mat slowFv_, partsNow_;
   double firstCorrection_ = 0;  // the first correction norm of the last Newton attempt
 
   // Step work vectors.

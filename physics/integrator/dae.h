@@ -91,6 +91,16 @@ class Dae {
     return none;
   }
 
+  // The fast columns' fast part at the state of the last residual evaluation:
+  // the share of dF/dv that the forces making them fast give (a tyre's and a
+  // brake's dependence on its wheel's spin), from those force laws alone, in
+  // the order of fastColumns() (nv x their number). The rest of a fast
+  // column changes slowly, so a refresh takes (column at the Jacobian) -
+  // (part there) + (part now): no residual. Without it (false), a refresh
+  // takes a residual per column (finite differences).
+  virtual bool hasFastColumnParts() const { return false; }
+  virtual void fastColumnParts(double /*t*/, Mat& /*parts*/) {}
+
   // Optional analytic blocks; return false to get finite differences.
   virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }
   virtual bool constraintJacobian(double /*t*/, const Vec& /*q*/, Mat& /*Phi_q*/) { return false; }

@@ -96,6 +96,16 @@ inline void addWorldForce(Data& d, int body, const Vec3& point, const Vec3& forc
   d.fext[body].tail<3>() += sb.cross(fb);
 }
 
+// A world-frame force at a world point and a world-frame torque as a spatial
+// force in the body's coordinates (what addWorldWrench adds to fext).
+inline Vec6 bodyWrench(const Data& d, int body, const Vec3& point, const Vec3& force, const Vec3& torque) {
+  const Mat3& R = d.R[body];
+  Vec6 f;
+  f.head<3>() = R.transpose() * force;
+  f.tail<3>() = (R.transpose() * (point - d.p[body])).cross(f.head<3>()) + R.transpose() * torque;
+  return f;
+}
+
 // Adds a world-frame force at a world point and a world-frame torque to a body.
 inline void addWorldWrench(Data& d, int body, const Vec3& point, const Vec3& force, const Vec3& torque) {
   if (body < 0) return;

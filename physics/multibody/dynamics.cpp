@@ -63,6 +63,15 @@ void inverseDynamics(const Model& model, Data& d) {
   }
 }
 
+void addPathJointForces(const Model& model, const Data& d, int body, Vec6 f, double scale,
+                        Eigen::Ref<Eigen::VectorXd> out) {
+  for (int i = body; i >= 0; i = model.bodies[i].parent) {
+    const Body& b = model.bodies[i];
+    for (int k = 0; k < b.nv; ++k) out(b.vIndex + k) += scale * d.S.col(b.vIndex + k).dot(f);
+    if (b.parent >= 0) f = d.Xup[i].applyTransposeForce(f);
+  }
+}
+
 void massMatrix(const Model& model, Data& d, Eigen::MatrixXd& M) {
   const int nb = static_cast<int>(model.bodies.size());
   M.setZero();

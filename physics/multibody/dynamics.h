@@ -17,6 +17,11 @@ void applySprings(const Model& model, Data& data);
 // Backward pass: tau = S^T f with f = I a + v x* I v - fext (Featherstone RNEA).
 // Needs accelerations and the applied (and constraint) wrenches in fext.
 void inverseDynamics(const Model& model, Data& data);
+// The joint forces that a spatial force f (body coordinates) on `body` alone
+// balances, times `scale`, added to out (nv): inverseDynamics' S^T X^T f
+// along the path to the root, without a pass over the tree. Needs positions.
+void addPathJointForces(const Model& model, const Data& data, int body, Vec6 f, double scale,
+                        Eigen::Ref<Eigen::VectorXd> out);
 // Joint-space mass matrix (nv x nv). Needs positions.
 void massMatrix(const Model& model, Data& data, Eigen::MatrixXd& M);
 

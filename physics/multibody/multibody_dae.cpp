@@ -100,6 +100,19 @@ integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const in
   return integ::EvalStatus::Ok;
 }
 
+bool MultibodyDae::hasFastColumnParts() const {
+  if (fastColumns_.empty()) return false;
+  for (const ForceProvider* p : providers_)
+    if (p->hasFastColumnParts()) return true;
+  return false;
+}
+
+void MultibodyDae::fastColumnParts(double t, integ::Mat& parts) {
+  parts.setZero(model_.nv, static_cast<int>(fastColumns_.size()));
+  for (ForceProvider* p : providers_)
+    if (p->hasFastColumnParts()) p->addFastColumnParts(model_, data_, t, fastColumns_, parts);
+}
+
 bool MultibodyDae::massMatrix(double /*t*/, const integ::Vec& q, integ::Mat& Fa) {
   updatePositions(model_, q, data_);
   mb::massMatrix(model_, data_, Fa);

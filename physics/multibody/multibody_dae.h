@@ -28,6 +28,13 @@ class ForceProvider {
   // last residual evaluation (the last Newton iterate: the accepted state up
   // to the last correction). May prepare the next step, of length about h.
   virtual void acceptStep(const Model& /*model*/, const Data& /*data*/, double /*t*/, double /*h*/) {}
+  // The share of dF/dv in the velocity coordinates `columns` (the DAE's fast
+  // columns) that this provider's fast-changing forces give at the state of
+  // its last apply(), from its force laws alone (integ::Dae::fastColumnParts),
+  // added to parts (nv x columns). False: it gives none it can compute so.
+  virtual bool hasFastColumnParts() const { return false; }
+  virtual void addFastColumnParts(const Model& /*model*/, const Data& /*data*/, double /*t*/,
+                                  const std::vector<int>& /*columns*/, Eigen::MatrixXd& /*parts*/) {}
 };
 
 struct StateLimits {
@@ -63,6 +70,8 @@ class MultibodyDae final : public integ::Dae {
                              integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
   bool constraintJacobian(double t, const integ::Vec& q, integ::Mat& Phi_q) override;
+  bool hasFastColumnParts() const override;
+  void fastColumnParts(double t, integ::Mat& parts) override;
 
  private:
   void applyForces(double t);

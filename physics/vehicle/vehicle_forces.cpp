@@ -2,9 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include "multibody/dynamics.h"
 #include "portable_math.h"
 
 namespace bdfcar::vehicle {
+
+namespace {
+// Forward-difference increment of a spin rate (rad/s): sqrt(machine
+// epsilon), scaled with the rate, as the integrator's own columns.
+constexpr double kFiniteDifferenceStep = 1.5e-8;
+}  // namespace
 
 VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& terrain,
                              const TerrainContactOptions& options)
@@ -190,6 +197,41 @@ const tyre::ContactPlane& VehicleForces::groundAt(int w, const Eigen::Vector3d& 
   if (!envelopes_[w].on || !options_.groundInsideStep) return c.plane;
   insideStep_[w] = tyre::effectivePlane(envelopes_[w], c.profile, centre);
   return insideStep_[w];
+}
+
+const tyre::ContactPlane& VehicleForces::latestGround(int w) const {
+  const WheelContact& c = state_->wheels[w];
+  return envelopes_[w].on && options_.groundInsideStep ? insideStep_[w] : c.plane;
+}
+
+// Each spin's column by a forward difference of its wheel's tyre and brake
+// alone (the spin moves the spindle alone: its motion subspace S), the
+// tyre's wrench change taken to the joints along the path to the root. The
+// tyre's and brake's inputs are those of the last apply(), as are outputs_.
+void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d, double t,
+                                       const std::vector<int>& columns, Eigen::MatrixXd& parts) {
+  const double h = sinceAccepted(t);
+  for (int w = 0; w < 4; ++w) {
+    const WheelLayout& wl = vehicle_.layout.wheels[w];
+    const auto col = std::find(columns.begin(), columns.end(), wl.spinV);
+    if (col == columns.end()) continue;
+    auto part = parts.col(static_cast<int>(col - columns.begin()));
+    const mb::Vec6 s = d.S.col(wl.spinV);  // the spindle's body-frame motion per unit joint rate
+    tyre::WheelKinematics k = wheelKinematics(d, w);
+    if (vehicle_.planar) planarWheelAttitude(d, w, k);
+    const double dv = kFiniteDifferenceStep * std::max(1.0, std::abs(k.spinRate));
+    k.centreVelocity += d.R[wl.spindle] * (dv * s.head<3>());
+    k.spinRate += dv * s(4);  // about the spindle's y
+    const tyre::TyreOutput& base = outputs_[w].out;
+    const tyre::TyreOutput moved = tyres_[w].evaluate(k, latestGround(w), state_->wheels[w].slip, h, modelLoad(w));
+    mb::Vec6 df = mb::Vec6::Zero();
+    if (moved.inContact) df += mb::bodyWrench(d, wl.spindle, moved.point, moved.force, moved.moment);
+    if (base.inContact) df -= mb::bodyWrench(d, wl.spindle, base.point, base.force, base.moment);
+    // F = tau - jointForce, and tau holds -S^T X^T fext.
+    mb::addPathJointForces(model, d, wl.spindle, df, -1.0 / dv, part);
+    const double spin = relativeSpin(d, w);
+    part(wl.spinV) -= wl.spinSign * (brakeTorque(w, spin + dv * s(4), h) - brakeTorque(w, spin, h)) / dv;
+  }
 }
 
 void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {

@@ -97,6 +97,13 @@ class VehicleForces final : public mb::ForceProvider {
   void beginStep(const mb::Model& model, const mb::Data& data, double t) override;
   void apply(const mb::Model& model, mb::Data& data, double t) override;
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
+  // The wheel spins' columns from the tyres and brakes (their forces change
+  // tenfold with the slip and the load); a powertrain's driveline couples
+  // the spins among themselves and to the crank, so with one the columns
+  // are left to finite differences.
+  bool hasFastColumnParts() const override { return !vehicle_.spec.powertrain; }
+  void addFastColumnParts(const mb::Model& model, const mb::Data& data, double t, const std::vector<int>& columns,
+                          Eigen::MatrixXd& parts) override;
 
   // The force laws of one wheel from its kinematics alone, for a model that
   // is not an mb::Model (the closed-form planar car, planar_car.h); apply()
@@ -170,6 +177,8 @@ class VehicleForces final : public mb::ForceProvider {
   // The ground a tyre at centre feels in a residual: the step's plane (a
   // point contact), or the envelope's at centre (kept in insideStep_[w]).
   const tyre::ContactPlane& groundAt(int w, const Eigen::Vector3d& centre);
+  // The ground of wheel w's latest evaluation (what groundAt last gave).
+  const tyre::ContactPlane& latestGround(int w) const;
   tyre::WheelKinematics wheelKinematics(const mb::Data& data, int wheel) const;
   double relativeSpin(const mb::Data& data, int wheel) const;
   // A planar model's normal loads (PlanarLoads): the corner springs' forces
