@@ -147,27 +147,19 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   long& cnt = st_->counters.jacobianResiduals;
-  EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt);
+  fastParts_ = opt_.fastColumnRescue && dae_.hasFastColumnParts();
+  EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt, fastParts_ ? &partsNow_ : nullptr);
   if (st == EvalStatus::Ok) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, Fa_, ws_, cnt);
   if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, q_, J_, ws_, cnt);
   if (st != EvalStatus::Ok) {
     msg = ws_.msg;
     return st;
   }
-  // The fast columns' slow rest, from the fast part at the blocks' own point
-  // (their last residual was at a perturbed one).
-  fastParts_ = false;
-  if (opt_.fastColumnRescue && dae_.hasFastColumnParts()) {
-    st = dae_.residual(t, q_, v_, a_, lam_, ws_.r0, false, ws_.msg);
-    ++cnt;
-    if (st != EvalStatus::Ok) {
-      msg = ws_.msg;
-      return st;
-    }
-    dae_.fastColumnParts(t, partsNow_);
+  // The fast columns' slow rest: each less the force laws' part at the
+  // blocks' own point.
+  if (fastParts_) {
     const std::vector<int>& fast = dae_.fastColumns();
     for (int k = 0; k < static_cast<int>(fast.size()); ++k) slowFv_.col(k) = dx_.Fv.col(fast[k]) - partsNow_.col(k);
-    fastParts_ = true;
   }
   ++st_->counters.jacobians;
   haveBlocks_ = true;

@@ -87,10 +87,11 @@ EvalStatus velocityColumn(Dae& dae, double t, const Vec& q, const Vec& v, const 
 }  // namespace
 
 EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                                 StateDerivatives& out, BlockWorkspace& ws, long& count) {
+                                 StateDerivatives& out, BlockWorkspace& ws, long& count, Mat* fastParts) {
   EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
   ++count;
   if (st != EvalStatus::Ok) return st;
+  if (fastParts) dae.fastColumnParts(t, *fastParts);
   ws.dq.setZero();
   ws.v = v;
   for (int i = 0; i < v.size(); ++i) {

@@ -28,8 +28,11 @@ struct StateDerivatives {
   Mat phiDotQ, phiDDotQ, phiDDotV;  // (nc x nv)
   void resize(const DaeSizes& s);
 };
+// fastParts: when given, Dae::fastColumnParts at the point (from the
+// residual the differences are taken against).
 EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                                 StateDerivatives& out, BlockWorkspace& ws, long& residualCount);
+                                 StateDerivatives& out, BlockWorkspace& ws, long& residualCount,
+                                 Mat* fastParts = nullptr);
 // The F_v (and g_v) columns of the DAE's fast coordinates alone
 // (Dae::fastColumns(): one residual per column, differenced against `base`,
 // the residual at the point), the rest of `out` kept.
