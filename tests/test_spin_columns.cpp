@@ -5,7 +5,8 @@
 // columns' rest (inertia, springs, everything but the tyres and brakes) is
 // the same finite difference of the residual without the force laws, so
 // whole = rest + parts must hold on every state: tyres in their linear
-// range, saturated (a locked wheel, a spinning one), braking, in the air.
+// range, saturated (a locked wheel, a spinning one), braking, in the air,
+// and a powertrain's slipping clutch and differential.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -85,6 +86,19 @@ double partsError(const std::string& file, const SpinCase& c) {
     if (c.brakes) forces.setBrakeCapacity(w, 800.0 + 300.0 * w);
   }
   whole.beginStep(t, q, v);
+  if (veh.spec.powertrain) {
+    // In gear, the crank 0.5 rad/s faster than the gearbox's input and the
+    // clutch's capacity well above its torque there (its smooth range): the
+    // driven spins move the clutch's torque on the crank and the drive
+    // torques.
+    const double ratio = 12.0;
+    forces.setDriveline({0.4, 1.0e4, ratio});
+    integ::Residual r;
+    r.resize(whole.sizes());
+    integ::Message m1;
+    EXPECT_EQ(whole.residual(t, q, v, Vec::Zero(m.nv), lambda, r, false, m1), integ::EvalStatus::Ok);
+    v(veh.layout.engineV) += ratio * forces.driveline().outputSpeed + 0.5 - forces.driveline().engineSpeed;
+  }
 
   const Mat all = spinColumnsByDifferences(whole, t, q, v, lambda);
   const Mat inertial = spinColumnsByDifferences(rest, t, q, v, lambda);
@@ -111,7 +125,8 @@ TEST(SpinColumns, TheForceLawsGiveTheColumnsTheWholeResidualGives) {
   const SpinCase reversed{0.0, {-0.5, 1.062, 1.07, 0.0}, false};
   const SpinCase braking{0.0, {1.068, 0.0, 1.6, 1.075}, true};
   const SpinCase inTheAir{0.5, {1.068, 0.0, 1.6, 1.075}, true};
-  for (const std::string file : {"vehicles/sedan.toml", "vehicles/paper.toml", "vehicles/sedan_envelope.toml"}) {
+  for (const std::string file :
+       {"vehicles/sedan.toml", "vehicles/paper.toml", "vehicles/sedan_envelope.toml", "vehicles/sedan_drive.toml"}) {
     // Forward differences of a residual of ~1e4 N with increments of ~1e-6
     // rad/s carry ~1e-6 of the columns' scale; 1e-4 leaves room for that.
     for (const SpinCase& c : {tyres, reversed, braking, inTheAir}) EXPECT_LT(partsError(file, c), 1e-4) << file;

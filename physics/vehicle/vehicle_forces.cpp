@@ -211,14 +211,23 @@ const tyre::ContactPlane& VehicleForces::latestGround(int w) const {
 void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d, double t,
                                        const std::vector<int>& columns, Eigen::MatrixXd& parts) {
   const double h = sinceAccepted(t);
+  std::array<tyre::WheelKinematics, 4> ks;
+  std::array<double, 4> spins;
+  for (int w = 0; w < 4; ++w) {
+    ks[w] = wheelKinematics(d, w);
+    if (vehicle_.planar) planarWheelAttitude(d, w, ks[w]);
+    spins[w] = relativeSpin(d, w);
+  }
+  const bool driveline = vehicle_.spec.powertrain.has_value();
+  const double engine = driveline ? engineSpeed(d) : 0.0;
+  const DrivelineTorques T0 = driveline ? drivelineAt(engine, spins, h) : DrivelineTorques{};
   for (int w = 0; w < 4; ++w) {
     const WheelLayout& wl = vehicle_.layout.wheels[w];
     const auto col = std::find(columns.begin(), columns.end(), wl.spinV);
     if (col == columns.end()) continue;
     auto part = parts.col(static_cast<int>(col - columns.begin()));
     const mb::Vec6 s = d.S.col(wl.spinV);  // the spindle's body-frame motion per unit joint rate
-    tyre::WheelKinematics k = wheelKinematics(d, w);
-    if (vehicle_.planar) planarWheelAttitude(d, w, k);
+    tyre::WheelKinematics k = ks[w];
     const double dv = kFiniteDifferenceStep * std::max(1.0, std::abs(k.spinRate));
     k.centreVelocity += d.R[wl.spindle] * (dv * s.head<3>());
     k.spinRate += dv * s(4);  // about the spindle's y
@@ -229,8 +238,16 @@ void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d
     if (base.inContact) df -= mb::bodyWrench(d, wl.spindle, base.point, base.force, base.moment);
     // F = tau - jointForce, and tau holds -S^T X^T fext.
     mb::addPathJointForces(model, d, wl.spindle, df, -1.0 / dv, part);
-    const double spin = relativeSpin(d, w);
+    const double spin = spins[w];
     part(wl.spinV) -= wl.spinSign * (brakeTorque(w, spin + dv * s(4), h) - brakeTorque(w, spin, h)) / dv;
+    // A driven wheel's spin moves the differential's output speed and the
+    // clutch's slip: every driven wheel's drive torque and the crank's.
+    if (!driveline || std::find(driven_.begin(), driven_.end(), w) == driven_.end()) continue;
+    std::array<double, 4> movedSpins = spins;
+    movedSpins[w] += dv * s(4);
+    const DrivelineTorques T1 = drivelineAt(engine, movedSpins, h);
+    part(vehicle_.layout.engineV) -= ((T1.engine - T1.clutch) - (T0.engine - T0.clutch)) / dv;
+    for (int u : driven_) addDriveTorqueColumn(model, d, u, ks[u], (T1.drive[u] - T0.drive[u]) / dv, part);
   }
 }
 
@@ -365,6 +382,26 @@ void VehicleForces::apply(const mb::Model&, mb::Data& d, double t) {
   aerodynamics(d);
 }
 
+// The joint forces of wheel w's drive torque per N m, as applyDriveTorque
+// applies it (times scale), added to out.
+void VehicleForces::addDriveTorqueColumn(const mb::Model& model, const mb::Data& d, int w,
+                                         const tyre::WheelKinematics& k, double scale,
+                                         Eigen::Ref<Eigen::VectorXd> out) const {
+  const WheelLayout& wl = vehicle_.layout.wheels[w];
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  switch (vehicle_.spec.driveReaction) {
+    case DriveReaction::Carrier: out(wl.spinV) -= scale * wl.spinSign; break;
+    case DriveReaction::Chassis:
+      mb::addPathJointForces(model, d, vehicle_.layout.chassis,
+                             mb::bodyWrench(d, vehicle_.layout.chassis, k.centre, zero, -k.spinAxis), -scale, out);
+      [[fallthrough]];
+    case DriveReaction::None:
+      mb::addPathJointForces(model, d, wl.spindle, mb::bodyWrench(d, wl.spindle, k.centre, zero, k.spinAxis), -scale,
+                             out);
+      break;
+  }
+}
+
 void VehicleForces::applyDriveTorque(mb::Data& d, int w, const tyre::WheelKinematics& k) const {
   const WheelContact& c = state_->wheels[w];
   if (c.driveTorque == 0.0) return;
@@ -397,25 +434,35 @@ void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4
   d.jointForce(vehicle_.layout.engineV) += drivelineTorques(engineSpeed(d), spins, h);
 }
 
-double VehicleForces::drivelineTorques(double engine, const std::array<double, 4>& spins, double h) {
+VehicleForces::DrivelineTorques VehicleForces::drivelineAt(double engine, const std::array<double, 4>& spins,
+                                                          double h) const {
   const PowertrainSpec& P = *vehicle_.spec.powertrain;
-  DrivelineState& s = state_->driveline;
-  s.engineSpeed = engine;
-  s.outputSpeed = drivenSpeed(spins);
-  s.engineTorque = engineTorque(P.engine, s.engineSpeed, s.command.throttle);
+  const DrivelineState& s = state_->driveline;
+  DrivelineTorques T;
+  T.output = drivenSpeed(spins);
+  T.engine = engineTorque(P.engine, engine, s.command.throttle);
   // In neutral the clutch turns the gearbox's input shaft alone (its inertia is the engine's).
-  s.clutchTorque = s.command.ratio == 0.0
-                       ? 0.0
-                       : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
-                                      s.engineSpeed - s.command.ratio * s.outputSpeed, h);
+  T.clutch = s.command.ratio == 0.0
+                 ? 0.0
+                 : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
+                                engine - s.command.ratio * T.output, h);
   // The differential: an equal share of the gearbox output for each driven
   // wheel (the torque balance of an open differential), plus the viscous
   // coupling's torque from the faster wheels to the slower.
-  const double share = s.command.ratio * s.clutchTorque / static_cast<double>(driven_.size());
-  for (int w : driven_) {
-    state_->wheels[w].driveTorque = share - P.viscousCoupling * (spins[w] - s.outputSpeed);
-  }
-  return s.engineTorque - s.clutchTorque;
+  const double share = s.command.ratio * T.clutch / static_cast<double>(driven_.size());
+  for (int w : driven_) T.drive[w] = share - P.viscousCoupling * (spins[w] - T.output);
+  return T;
+}
+
+double VehicleForces::drivelineTorques(double engine, const std::array<double, 4>& spins, double h) {
+  const DrivelineTorques T = drivelineAt(engine, spins, h);
+  DrivelineState& s = state_->driveline;
+  s.engineSpeed = engine;
+  s.outputSpeed = T.output;
+  s.engineTorque = T.engine;
+  s.clutchTorque = T.clutch;
+  for (int w : driven_) state_->wheels[w].driveTorque = T.drive[w];
+  return T.engine - T.clutch;
 }
 
 void VehicleForces::aerodynamics(mb::Data& d) const {

@@ -98,10 +98,10 @@ class VehicleForces final : public mb::ForceProvider {
   void apply(const mb::Model& model, mb::Data& data, double t) override;
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
   // The wheel spins' columns from the tyres and brakes (their forces change
-  // tenfold with the slip and the load); a powertrain's driveline couples
-  // the spins among themselves and to the crank, so with one the columns
-  // are left to finite differences.
-  bool hasFastColumnParts() const override { return !vehicle_.spec.powertrain; }
+  // tenfold with the slip and the load) and a powertrain's driveline (its
+  // clutch and differential couple the driven spins to each other and to
+  // the crank).
+  bool hasFastColumnParts() const override { return true; }
   void addFastColumnParts(const mb::Model& model, const mb::Data& data, double t, const std::vector<int>& columns,
                           Eigen::MatrixXd& parts) override;
 
@@ -194,6 +194,15 @@ class VehicleForces final : public mb::ForceProvider {
   // Mean of the driven wheels' spins relative to their carriers (spins: all four), + forward.
   double drivenSpeed(const std::array<double, 4>& spins) const;
   void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
+  void addDriveTorqueColumn(const mb::Model& model, const mb::Data& data, int wheel, const tyre::WheelKinematics& k,
+                            double scale, Eigen::Ref<Eigen::VectorXd> out) const;
+  // The driveline's torques at the crank's and the wheels' speeds, from its
+  // state (drivelineTorques stores them there).
+  struct DrivelineTorques {
+    double engine = 0, clutch = 0, output = 0;  // N m, N m, rad/s (the differential's output speed)
+    std::array<double, 4> drive{};              // N m, the driven wheels'
+  };
+  DrivelineTorques drivelineAt(double engine, const std::array<double, 4>& spins, double h) const;
   void aerodynamics(mb::Data& data) const;
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(outputs_[w].modelLoad) : std::nullopt;
