@@ -147,8 +147,8 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   long& cnt = st_->counters.jacobianResiduals;
-  fastParts_ = opt_.fastColumnRescue && dae_.hasFastColumnParts();
-  EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt, fastParts_ ? &partsNow_ : nullptr);
+  const bool parts = opt_.fastColumnRescue && dae_.hasFastColumnParts();
+  EvalStatus st = stateDerivativeBlocks(dae_, t, q_, v_, a_, lam_, dx_, ws_, cnt, parts ? &partsNow_ : nullptr);
   if (st == EvalStatus::Ok) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, Fa_, ws_, cnt);
   if (st == EvalStatus::Ok) st = constraintJacobianBlock(dae_, t, q_, J_, ws_, cnt);
   if (st != EvalStatus::Ok) {
@@ -157,6 +157,7 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   }
   // The fast columns' slow rest: each less the force laws' part at the
   // blocks' own point.
+  fastParts_ = parts;
   if (fastParts_) {
     const std::vector<int>& fast = dae_.fastColumns();
     for (int k = 0; k < static_cast<int>(fast.size()); ++k) slowFv_.col(k) = dx_.Fv.col(fast[k]) - partsNow_.col(k);
