@@ -134,7 +134,7 @@ bench_table() {
       --vehicle assets/vehicles/paper.toml --duration 6 > /dev/null 2>&1
     echo "| function | share of the step |"
     echo "|---|---|"
-    callgrind_annotate --inclusive=yes "$tmp/cg.step" 2> /dev/null |
+    callgrind_annotate --auto=no --inclusive=yes "$tmp/cg.step" 2> /dev/null |
       sed -nE 's/^ *[0-9,]+ \( *([0-9.]+%)\) *[^:]*:([^(<]*)[(<].*/\2 \1/p' | awk '!seen[$1]++' |
       grep -E '::(newton|residual|applyForces|VehicleForces::apply|FialaTyre::evaluate|applySprings|updatePositions|updateVelocities|updateAccelerations|inverseDynamics|constraintResiduals|applyConstraintWrenches|general_matrix_vector_product|evaluateJacobian|MultibodyDae::retract) ' |
       awk '{ printf "| %s | %s |\n", $1, $2 }'
