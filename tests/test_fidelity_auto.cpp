@@ -228,7 +228,8 @@ TEST(FidelityAuto, SwitchesMoveTheChassisByLessThanTheLimit) {
 // The road scan's shortcut (Terrain::levelOver) against the rays it stands
 // for: over the proving ground (a ground with the circuit's mesh, curbs,
 // a gravel trap, a slope, a heightfield section), boxes along the circuit's
-// centre line and its edges and boxes anywhere. Wherever the terrain vouches
+// centre line and its edges, boxes anywhere and a wheel's strip of a tick
+// (through the mesh's plan grid, not its tree). Wherever the terrain vouches
 // for a box, every ray on a 9 x 9 grid over it must find the road plane;
 // and it must vouch for most of the centre line (else it buys nothing),
 // never for a box over a curb or the rough section.
@@ -266,11 +267,17 @@ TEST(FidelityAuto, LevelShortcutNeverVouchesForGroundTheRaysFindOffTheRoadPlane)
     return static_cast<double>(state >> 11) / 9007199254740992.0;
   };
   const size_t n = line.points.size();
-  for (size_t k = 0; k < 3000; ++k) {
+  for (size_t k = 0; k < 4000; ++k) {
     Eigen::Vector2d centre;
     double half;
     bool onLine = false;
-    if (k < 2000) {  // along the line, across the road to beyond its edges
+    if (k >= 3000) {  // a wheel's strip of a tick (the policy's own query), anywhere across the road
+      const size_t i = static_cast<size_t>(uniform() * (n - 1));
+      const Eigen::Vector2d a = line.points[i], b = line.points[(i + 1) % n];
+      const Eigen::Vector2d t = (b - a).normalized(), across(-t.y(), t.x());
+      centre = a + uniform() * (b - a) + (uniform() - 0.5) * 12.0 * across;
+      half = 0.02 + 0.3 * uniform();
+    } else if (k < 2000) {  // along the line, across the road to beyond its edges
       const size_t i = static_cast<size_t>(uniform() * (n - 1));
       const Eigen::Vector2d a = line.points[i], b = line.points[(i + 1) % n];
       const Eigen::Vector2d t = (b - a).normalized(), across(-t.y(), t.x());

@@ -22,28 +22,29 @@ bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
   return h.hit && std::abs(h.point.z() - roadZ_) <= kRoadHeight && h.normal.z() >= roadNormalZ();
 }
 
-// The box around the scan's points from `first` to `last` (linear in the
-// distance: the ends' points bound them), asked of the terrain at once. A
-// rounding margin around it; what the terrain cannot vouch for is scanned
-// ray by ray.
+// Each wheel's scan points from `first` to `last` lie on a segment (linear
+// in the distance): the box around it, with a rounding margin, asked of the
+// terrain; the stretch is vouched for when every wheel's is. One box per
+// wheel, not one around the four: the terrain's answer costs with the area
+// it covers (the tree's nodes and triangles there), and the four wheels'
+// strips are a small part of the car's footprint. A box the terrain cannot
+// vouch for is scanned ray by ray: the decisions are the rays' either way.
 template <class Point>
 bool FidelityPolicy::levelAhead(double first, double last, const Point& point) const {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
-  for (const Eigen::Vector2d& o : offsets_)
-    for (const double d : {first, last}) {
-      lo = lo.cwiseMin(point(o, d));
-      hi = hi.cwiseMax(point(o, d));
-    }
   terrain::Terrain::LevelQuery q;
   const Eigen::Vector2d margin = Eigen::Vector2d::Constant(1e-6);
-  q.lo = lo - margin;
-  q.hi = hi + margin;
   q.zTop = roadZ_ + kRayAbove;
   q.zBottom = roadZ_ + kRayAbove - kRayLength;
   q.height = roadZ_;
   q.tolerance = kRoadHeight;
   q.minNormalZ = roadNormalZ();
-  return terrain_.levelOver(q);
+  for (const Eigen::Vector2d& o : offsets_) {
+    const Eigen::Vector2d a = point(o, first), b = point(o, last);
+    q.lo = a.cwiseMin(b) - margin;
+    q.hi = a.cwiseMax(b) + margin;
+    if (!terrain_.levelOver(q)) return false;
+  }
+  return true;
 }
 
 void FidelityPolicy::refuse(State& s) {

@@ -35,15 +35,17 @@ class PlanGrid {
     const size_t n = data.triangles.size();
     if (n < 64) return;  // the tree's walk is short
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, lengths = 0, widths = 0;
+    boxes_.reserve(n);
     for (const auto& t : data.triangles) {
-      double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
+      Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
       for (int k : t) {
         const Eigen::Vector3d& v = data.vertices[k];
-        lx = std::min(lx, v.x()), hx = std::max(hx, v.x()), ly = std::min(ly, v.y()), hy = std::max(hy, v.y());
+        b.xLo = std::min(b.xLo, v.x()), b.xHi = std::max(b.xHi, v.x()), b.yLo = std::min(b.yLo, v.y()), b.yHi = std::max(b.yHi, v.y());
       }
-      x0 = std::min(x0, lx), x1 = std::max(x1, hx), y0 = std::min(y0, ly), y1 = std::max(y1, hy);
-      lengths += hx - lx;
-      widths += hy - ly;
+      x0 = std::min(x0, b.xLo), x1 = std::max(x1, b.xHi), y0 = std::min(y0, b.yLo), y1 = std::max(y1, b.yHi);
+      lengths += b.xHi - b.xLo;
+      widths += b.yHi - b.yLo;
+      boxes_.push_back(b);
     }
     // Cells about as long and as wide as the triangles, at most 4097 a side.
     const double extent = std::max(x1 - x0, y1 - y0);
@@ -58,19 +60,16 @@ class PlanGrid {
       clear();
       return;
     }
+    for (Box& b : boxes_) b = {b.xLo - margin_, b.xHi + margin_, b.yLo - margin_, b.yHi + margin_};
     std::vector<int> count(static_cast<size_t>(nx_) * ny_ + 1, 0);
-    auto forCells = [&](const std::array<int, 3>& t, auto&& f) {
-      double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
-      for (int k : t) {
-        const Eigen::Vector3d& v = data.vertices[k];
-        lx = std::min(lx, v.x()), hx = std::max(hx, v.x()), ly = std::min(ly, v.y()), hy = std::max(hy, v.y());
-      }
-      const int i0 = column(lx - margin_), i1 = column(hx + margin_), j0 = row(ly - margin_), j1 = row(hy + margin_);
+    auto forCells = [&](size_t k, auto&& f) {
+      const Box& b = boxes_[k];
+      const int i0 = column(b.xLo), i1 = column(b.xHi), j0 = row(b.yLo), j1 = row(b.yHi);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) f(static_cast<size_t>(j) * nx_ + i);
     };
     size_t entries = 0;
-    for (const auto& t : data.triangles) forCells(t, [&](size_t c) { ++count[c + 1], ++entries; });
+    for (size_t k = 0; k < n; ++k) forCells(k, [&](size_t c) { ++count[c + 1], ++entries; });
     if (entries > 16 * n) {
       clear();
       return;
@@ -79,17 +78,36 @@ class PlanGrid {
     for (size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
     start_ = count;
     triangles_.resize(entries);
-    for (size_t k = 0; k < n; ++k) forCells(data.triangles[k], [&](size_t c) { triangles_[count[c]++] = static_cast<int>(k); });
+    for (size_t k = 0; k < n; ++k) forCells(k, [&](size_t c) { triangles_[count[c]++] = static_cast<int>(k); });
   }
   bool empty() const { return start_.empty(); }
-  // The triangles under (x, y) (none outside the grid).
+  // The triangles under (x, y) (none outside the grid): those of its cell
+  // whose grown plan-view box holds it (the others' corners need not be
+  // fetched nor the hit test run).
   template <class F>
   void forEachAt(double x, double y, F&& f) const {
     if (!(x >= x0_ && y >= y0_)) return;
     const double i = (x - x0_) / cellX_, j = (y - y0_) / cellY_;
     if (!(i < nx_ && j < ny_)) return;
     const size_t c = static_cast<size_t>(j) * nx_ + static_cast<size_t>(i);
-    for (int k = start_[c]; k < start_[c + 1]; ++k) f(triangles_[k]);
+    for (int k = start_[c]; k < start_[c + 1]; ++k) {
+      const Box& b = boxes_[static_cast<size_t>(triangles_[k])];
+      if (x >= b.xLo && x <= b.xHi && y >= b.yLo && y <= b.yHi) f(triangles_[k]);
+    }
+  }
+  // The triangles of every cell the plan-view box [lo, hi] touches (a
+  // triangle that spans cells comes once per cell): each one under a point
+  // of the box among them. Nothing where the box misses the grid.
+  template <class F>
+  void forEachIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, F&& f) const {
+    const double xEnd = x0_ + nx_ * cellX_, yEnd = y0_ + ny_ * cellY_;
+    if (!(hi.x() >= x0_ && hi.y() >= y0_ && lo.x() < xEnd && lo.y() < yEnd)) return;
+    const int i0 = column(lo.x()), i1 = column(hi.x()), j0 = row(lo.y()), j1 = row(hi.y());
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const size_t c = static_cast<size_t>(j) * nx_ + i;
+        for (int k = start_[c]; k < start_[c + 1]; ++k) f(triangles_[k]);
+      }
   }
 
  private:
@@ -99,11 +117,21 @@ class PlanGrid {
   void clear() {
     start_.clear();
     triangles_.clear();
+    boxes_.clear();
   }
+  struct Box {
+    double xLo, xHi, yLo, yHi;
+  };
   double x0_ = 0, y0_ = 0, cellX_ = 1, cellY_ = 1, margin_ = 0;
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, triangles_;
+  std::vector<Box> boxes_;  // each triangle's plan view, grown by the margin
 };
+
+struct TriangleSpan {
+  double zLo = 0, zHi = 0, normalZ = 0;
+};
+TriangleSpan triangleSpan(const btVector3* t);
 
 class MeshTerrain final : public Terrain {
  public:
@@ -111,6 +139,8 @@ class MeshTerrain final : public Terrain {
   Hit castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const override;
   bool surfacesLevelOver(const LevelQuery& q) const override;
   bool planGrid() const { return !grid_.empty(); }
+  // Triangle k's corners, as Bullet's arrays hold them.
+  void corners(int k, btVector3* v) const;
 
  private:
   // Bullet keeps pointers into these two arrays: they outlive the shapes below.
@@ -119,6 +149,7 @@ class MeshTerrain final : public Terrain {
   std::unique_ptr<btTriangleIndexVertexArray> arrays_;
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
   PlanGrid grid_;
+  std::vector<TriangleSpan> spans_;  // per triangle, with the grid (surfacesLevelOver)
   double friction_;
 };
 
@@ -133,6 +164,18 @@ MeshTerrain::MeshTerrain(const TerrainData& data, bool planGrid)
       static_cast<int>(data.triangles.size()), indices_.data(), static_cast<int>(3 * sizeof(int)),
       static_cast<int>(data.vertices.size()), coordinates_.data(), static_cast<int>(3 * sizeof(btScalar)));
   shape_ = std::make_unique<btBvhTriangleMeshShape>(arrays_.get(), /*useQuantizedAabbCompression=*/true);
+  if (grid_.empty()) return;
+  spans_.resize(data.triangles.size());
+  btVector3 v[3];
+  for (size_t k = 0; k < spans_.size(); ++k) {
+    corners(static_cast<int>(k), v);
+    spans_[k] = triangleSpan(v);
+  }
+}
+
+void MeshTerrain::corners(int k, btVector3* v) const {
+  const int* t = &indices_[3 * static_cast<size_t>(k)];
+  for (int c = 0; c < 3; ++c) v[c] = btVector3(coordinates_[3 * t[c]], coordinates_[3 * t[c] + 1], coordinates_[3 * t[c] + 2]);
 }
 
 // Nearest triangle along the segment, through the tree.
@@ -142,10 +185,8 @@ Hit MeshTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& dir
                           [this, down](NearestTriangleHit& nearest, const btVector3& a, const btVector3& b) {
                             if (down && !grid_.empty()) {
                               grid_.forEachAt(a.x(), a.y(), [&](int k) {
-                                const int* t = &indices_[3 * static_cast<size_t>(k)];
                                 btVector3 v[3];
-                                for (int c = 0; c < 3; ++c)
-                                  v[c] = btVector3(coordinates_[3 * t[c]], coordinates_[3 * t[c] + 1], coordinates_[3 * t[c] + 2]);
+                                corners(k, v);
                                 nearest.processTriangle(v, 0, k);
                               });
                               return;
@@ -156,36 +197,57 @@ Hit MeshTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& dir
                           });
 }
 
-// Every triangle whose box the tree finds overlapping the query's box: level
-// when its three corners are within the tolerance (so is every point of it)
-// and its normal, as a ray's hit reports it (ray_segment.cpp: the winding's
-// cross product, made unit, turned up), is within the slope.
+// What the level check asks of a triangle: its corners' lowest and highest
+// z and its normal's |z| as a ray's hit reports it (ray_segment.cpp: the
+// winding's cross product, made unit; infinite for a degenerate triangle,
+// which no ray hits).
+TriangleSpan triangleSpan(const btVector3* t) {
+  TriangleSpan s;
+  s.zLo = std::min({t[0].z(), t[1].z(), t[2].z()});
+  s.zHi = std::max({t[0].z(), t[1].z(), t[2].z()});
+  const btVector3 n = (t[1] - t[0]).cross(t[2] - t[0]);
+  s.normalZ = n.length2() == 0.0 ? INFINITY : std::abs(Eigen::Vector3d(n.x(), n.y(), n.z()).normalized().z());
+  return s;
+}
+
+// Level: its three corners within the tolerance (so is every point of it;
+// the corners' extremes decide, |z - height| being monotonic on each side)
+// and its normal within the slope.
+bool levelTriangle(const TriangleSpan& s, const Terrain::LevelQuery& q) {
+  constexpr double kMargin = 1e-9;  // m, for the rays' rounding
+  const double reach = q.tolerance - kMargin;
+  return std::abs(s.zLo - q.height) <= reach && std::abs(s.zHi - q.height) <= reach && s.normalZ >= q.minNormalZ;
+}
+
+// Every triangle whose box the tree finds overlapping the query's box.
 class LevelTriangles final : public btTriangleCallback {
  public:
   explicit LevelTriangles(const Terrain::LevelQuery& q) : q_(q) {}
-  void processTriangle(btVector3* t, int, int) override {
-    if (!level) return;
-    constexpr double kMargin = 1e-9;  // m, for the rays' rounding
-    for (int k = 0; k < 3; ++k)
-      if (!(std::abs(t[k].z() - q_.height) <= q_.tolerance - kMargin)) {
-        level = false;
-        return;
-      }
-    const btVector3 n = (t[1] - t[0]).cross(t[2] - t[0]);
-    if (n.length2() == 0.0) return;  // degenerate: never hit by a ray
-    const Eigen::Vector3d unit = Eigen::Vector3d(n.x(), n.y(), n.z()).normalized();
-    if (!(std::abs(unit.z()) >= q_.minNormalZ)) level = false;
-  }
+  void processTriangle(btVector3* t, int, int) override { level = level && levelTriangle(triangleSpan(t), q_); }
   bool level = true;
 
  private:
   const Terrain::LevelQuery& q_;
 };
 
+// With a plan grid, the triangles of the cells under the box whose heights
+// reach into the rays' span: every triangle a ray down through the box can
+// meet, for a few cells' worth of work, each from its span kept since the
+// start. (Bullet's stackless tree walk costs about the same for a wheel's
+// strip as for a car's footprint.)
 bool MeshTerrain::surfacesLevelOver(const LevelQuery& q) const {
-  LevelTriangles check(q);
-  shape_->processAllTriangles(&check, btVector3(q.lo.x(), q.lo.y(), q.zBottom), btVector3(q.hi.x(), q.hi.y(), q.zTop));
-  return check.level;
+  if (grid_.empty()) {
+    LevelTriangles check(q);
+    shape_->processAllTriangles(&check, btVector3(q.lo.x(), q.lo.y(), q.zBottom), btVector3(q.hi.x(), q.hi.y(), q.zTop));
+    return check.level;
+  }
+  bool level = true;
+  grid_.forEachIn(q.lo, q.hi, [&](int k) {
+    const TriangleSpan& s = spans_[static_cast<size_t>(k)];
+    if (s.zHi < q.zBottom || s.zLo > q.zTop) return;  // out of the rays' reach
+    level = level && levelTriangle(s, q);
+  });
+  return level;
 }
 
 }  // namespace
