@@ -88,6 +88,7 @@ void BM_StepPaperSetting(benchmark::State& st) {
   o.newtonIterations = 2;
   o.jacobianEvery = 200;
   o.refreshWhenNotContracting = false;
+  o.timing = true;
   integ::BdfIntegrator bdf(f.dae, o);
   integ::Message msg;
   bdf.initialize(0.0, f.q, f.v, msg);

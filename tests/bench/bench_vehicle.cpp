@@ -25,6 +25,7 @@ void stepBenchmark(benchmark::State& st, const std::string& vehicleFile, const s
   spec.terrainFile = terrainFile.empty() ? "" : assetPath(terrainFile);
   spec.settleTime = 0.5;
   spec.startY = 1.75;
+  spec.integrator.bdf.timing = true;
   scenario::Simulation sim(spec);
   sim.prepare();
   while (sim.time() < 1.9) sim.step();  // up to the lane change
