@@ -25,9 +25,10 @@ bool FidelityPolicy::level(const Eigen::Vector2d& xy) const {
 // Each wheel's scan points from `first` to `last` lie on a segment (linear
 // in the distance): the box around it, with a rounding margin, asked of the
 // terrain; the stretch is vouched for when every wheel's is. One box per
-// wheel, not one around the four: the terrain's answer costs with the area
-// it covers (the tree's nodes and triangles there), and the four wheels'
-// strips are a small part of the car's footprint. A box the terrain cannot
+// wheel, not one around the four: a mesh answers from its plan grid at a
+// cost that grows with the cells the box covers (terrain/bullet/
+// mesh_terrain.cpp), and the four wheels' strips are a small part of the
+// car's footprint. A box the terrain cannot
 // vouch for is scanned ray by ray: the decisions are the rays' either way.
 template <class Point>
 bool FidelityPolicy::levelAhead(double first, double last, const Point& point) const {

@@ -11,7 +11,8 @@
 //    that is one level plane is not scanned at all, and a stretch the
 //    terrain vouches for as a whole (Terrain::levelOver: a ground's plane
 //    and its meshes' triangles there all level) costs a query per wheel (a
-//    box around its strip), not a ray per wheel every kScanStep. The decisions are the rays' either way.
+//    box around its strip), not a ray per wheel every kScanStep. The
+//    decisions are the rays' either way.
 //  - The ground under each wheel now (the contact planes of the last step)
 //    must be the road plane too: a car standing on a hill or a curb is not
 //    on the road plane, whatever the scan says of the road ahead.
