@@ -54,12 +54,12 @@ int runCheck(const CheckArgs& a) {
     std::fprintf(stderr, "[%zu/%zu] %s: %s (%.1f s)\n", i + 1, files.size(), spec.name.c_str(),
                  r.passed ? "ok" : "FAILED", r.wall);
   }
-  std::printf("| case | check | outcome | us per step p50 / p99 / max | refreshed / rescued / split |\n");
+  std::printf("| case | check | outcome | us per step p50 / p99 / max | refreshed / rescued / split / refined |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const scenario::CheckResult& r : results) {
-    std::printf("| %s | %s | %s | %.0f / %.0f / %.0f | %ld / %ld / %ld |\n", r.name.c_str(),
+    std::printf("| %s | %s | %s | %.0f / %.0f / %.0f | %ld / %ld / %ld / %ld |\n", r.name.c_str(),
                 r.passed ? "ok" : "FAILED", r.outcome.c_str(), r.cost.p50, r.cost.p99, r.cost.max,
-                r.counters.refreshes, r.counters.rescues, r.counters.splits);
+                r.counters.refreshes, r.counters.rescues, r.counters.splits, r.counters.refinements);
   }
   for (const scenario::CheckResult& r : results)
     for (const std::string& f : r.failures) std::printf("%s (%s): %s\n", r.name.c_str(), r.file.c_str(), f.c_str());

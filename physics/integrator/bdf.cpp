@@ -119,7 +119,7 @@ StepReport BdfIntegrator::step(double h) {
       hs *= 2;
     }
   } else {
-    rep = splitOnFailure(h, due, 0);
+    rep = splitAhead(h, due, 0, carriedDepth(h));
   }
   if (rep.ok()) {
     ++st_->counters.steps;
@@ -133,13 +133,49 @@ StepReport BdfIntegrator::step(double h) {
 // failure with a smaller step), is rejected and taken as two half steps,
 // recursively down to h / 2^kMaxSplits. The history holds node times, so
 // uneven steps are exact BDF steps.
+//
+// A converged step that left its predictor by more than refineError (an
+// impact, a wheel landing: BdfOptions) is taken as halves the same way, to
+// refineDepth; each half is judged again, so the pieces are h / 2^k where
+// the motion turns sharply and grow back by twice at most (within the
+// stable step ratio of BDF2, 1 + sqrt 2).
 StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) {
-  StepReport rep = substep(h, jacobianDue, depth >= kMaxSplits);
+  const bool mayRefine = depth < opt_.refineDepth && opt_.refineError > 0 && opt_.refreshWhenNotContracting;
+  StepReport rep = substep(h, jacobianDue, depth >= kMaxSplits, mayRefine);
+  if (rep.refine) {
+    ++st_->counters.refinements;
+    const double tEnd = node(0).t + h;
+    rep = splitOnFailure(0.5 * h, false, depth + 1);
+    if (!rep.ok()) return rep;
+    return splitOnFailure(tEnd - node(0).t, false, depth + 1);
+  }
   const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
   if (rep.ok() || !retry || depth >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
   ++st_->counters.splits;
   const double tEnd = node(0).t + h;
   rep = splitOnFailure(0.5 * h, false, depth + 1);
+  if (!rep.ok()) return rep;
+  return splitOnFailure(tEnd - node(0).t, false, depth + 1);
+}
+
+// A step right after refined ones starts at twice their shortest piece, not
+// at h: on relief h would miss its predictor again, an attempt wasted. The
+// history's node times say how the last h was cut (so a run restored from
+// its state cuts the same way).
+int BdfIntegrator::carriedDepth(double h) const {
+  if (opt_.refineDepth <= 0 || !(opt_.refineError > 0) || !opt_.refreshWhenNotContracting) return 0;
+  double shortest = h;
+  for (int i = 0; i + 1 < st_->count && node(i + 1).t >= node(0).t - h * (1 + 1e-9); ++i)
+    shortest = std::min(shortest, node(i).t - node(i + 1).t);
+  int depth = 0;
+  while (depth < opt_.refineDepth && 2.0 * shortest < std::ldexp(h, -depth) * (1 - 1e-9)) ++depth;
+  return depth;
+}
+
+StepReport BdfIntegrator::splitAhead(double h, bool jacobianDue, int depth, int ahead) {
+  if (ahead == 0) return splitOnFailure(h, jacobianDue, depth);
+  const double tEnd = node(0).t + h;
+  StepReport rep = splitAhead(0.5 * h, jacobianDue, depth + 1, ahead - 1);
   if (!rep.ok()) return rep;
   return splitOnFailure(tEnd - node(0).t, false, depth + 1);
 }
@@ -473,7 +509,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::recover(double t, const BdfCoefficie
   return fullNewton(t, c, JacobianScope::Whole, rep);
 }
 
-StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort) {
+StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, bool mayRefine) {
   StepReport rep;
   const double tNew = node(0).t + h;
   const int k = std::min(opt_.order, st_->count);
@@ -541,6 +577,13 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort) {
     }
   }
 
+  // The predictor's miss (from the second step on: the first's predictor is
+  // a constant) measures the step's local error (Milne's device: BDF2's is
+  // about 2/9 of it); too large, the step is taken again as halves.
+  if (mayRefine && st_->count > 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
+    rep.refine = true;
+    return rep;
+  }
   // Accept: the new node becomes node(0).
   SolutionPoint& p = st_->push();
   p.t = tNew;

@@ -54,6 +54,15 @@ struct BdfOptions {
   // columns (Dae::fastColumns) before the whole Jacobian.
   bool chordContinuation = true;
   bool fastColumnRescue = true;
+  // A converged step whose solution lies further than refineError (m, rad,
+  // the largest over the coordinates' increments) from its predictor is
+  // not accepted but taken as two halves, recursively, at most refineDepth
+  // times (3: down to an eighth). The predictor's miss grows as h^3 times
+  // the motion's third derivative: an impact, a wheel landing, a kink in
+  // the road or the steering; smooth driving stays far below it. 0: off
+  // (and off with refreshWhenNotContracting: the paper's method).
+  double refineError = 3e-3;
+  int refineDepth = 3;
   StartUp startUp = StartUp::Auto;
   // Accumulate the Jacobian / residual / back-substitution split (the
   // report's section 5, the benchmarks). Off unless asked: its clock reads,
@@ -90,9 +99,16 @@ class BdfIntegrator final : public Integrator {
   SolutionPoint& node(int i) { return st_->node(i); }
   // lastResort: the deepest split, where a stalled step may evaluate the
   // whole Jacobian at every iterate.
-  StepReport substep(double h, bool jacobianDue, bool lastResort = false);
+  // mayRefine: a step that misses its predictor by more than refineError
+  // returns refine, not accepted (splitOnFailure).
+  StepReport substep(double h, bool jacobianDue, bool lastResort = false, bool mayRefine = false);
   static constexpr int kMaxSplits = 4;
   StepReport splitOnFailure(double h, bool jacobianDue, int depth);
+  // How many halvings the next step of h starts with: after refined steps,
+  // its first piece is twice their shortest (carriedDepth); splitAhead takes
+  // the first `ahead` halves so, the rest by splitOnFailure.
+  int carriedDepth(double h) const;
+  StepReport splitAhead(double h, bool jacobianDue, int depth, int ahead);
   EvalStatus evaluateJacobian(double t, Message& msg);
   void factorize(double hPrime);
   // base: the residual at the iterate (the Newton iteration's own).

@@ -51,6 +51,7 @@ Counters& operator+=(Counters& a, const Counters& b) {
   a.refreshes += b.refreshes;
   a.rescues += b.rescues;
   a.splits += b.splits;
+  a.refinements += b.refinements;
   return a;
 }
 

@@ -39,6 +39,9 @@ struct StepReport {
   // An evaluation failure the DAE marked recoverable (EvalStatus::Recoverable):
   // the BDF integrator retries it with smaller steps, as IDA does.
   bool recoverable = false;
+  // The step converged but missed its predictor by more than
+  // BdfOptions::refineError: not accepted, to be taken as halves.
+  bool refine = false;
   bool ok() const { return status == StepStatus::Ok; }
 };
 
@@ -56,6 +59,7 @@ struct Counters {
   long refreshes = 0;         // Jacobians forced because Newton stopped contracting
   long rescues = 0;           // steps iterated on to tolerance beyond the fixed count
   long splits = 0;            // steps rejected and taken as two half steps
+  long refinements = 0;       // converged steps taken again as two halves (BdfOptions::refineError)
 };
 
 // Work of several integrators (a run that switches between models).

@@ -106,7 +106,7 @@ void solutionPoint(IO& io, P& p) {
 template <class IO, class C>
 void counters(IO& io, C& c) {
   for (auto* n : {&c.steps, &c.substeps, &c.newtonIterations, &c.residuals, &c.jacobianResiduals, &c.jacobians,
-                  &c.columnRefreshes, &c.factorizations, &c.solves, &c.refreshes, &c.rescues, &c.splits})
+                  &c.columnRefreshes, &c.factorizations, &c.solves, &c.refreshes, &c.rescues, &c.splits, &c.refinements})
     io.field("integrator counters", *n);
 }
 

@@ -50,7 +50,8 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
   k << '|' << static_cast<int>(i.method) << ' ' << i.step << ' ' << scene.tick << ' ' << b.order << ' '
     << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
     << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
-    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp) << ' '
+    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
+    << ' ' << b.refineDepth << ' '
     << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm;
   return k.str();
 }

@@ -110,17 +110,19 @@ tyre::ContactPlane VehicleForces::queryGround(const Eigen::Vector3d& centre, con
   return plane;
 }
 
-void VehicleForces::prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
+void VehicleForces::prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis,
+                                  const Eigen::Vector3d& travel) {
   WheelContact& c = state_->wheels[w];
   if (!envelopes_[w].on) {
     c.plane = queryGround(centre, spinAxis, tyres_[w].unloadedRadius());
     return;
   }
-  sampleProfile(w, centre, spinAxis);
+  sampleProfile(w, centre, spinAxis, travel);
   c.plane = tyre::effectivePlane(envelopes_[w], c.profile, centre);
 }
 
-void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis) {
+void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis,
+                                  const Eigen::Vector3d& travel) {
   const tyre::Envelope& e = envelopes_[w];
   tyre::RoadProfile& p = state_->wheels[w].profile;
   const double R0 = tyres_[w].unloadedRadius();
@@ -131,20 +133,26 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   p.heading = heading.squaredNorm() < 1e-6 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d(heading.normalized());
   p.origin = centre.head<2>();
   // Both cams' reach, and a margin for where the step ends up against its
-  // prediction (millimetres; a lattice node more is plenty).
+  // prediction (millimetres; a lattice node more is plenty); and as far again
+  // as the wheel moves in the predicted step, the way it moves (the next may
+  // be twice as long: a split step's halves grow back by doubling).
   terrain::HeightLattice& lattice = *lattice_;
   const double half = 0.5 * e.base + e.a + 2.0 * lattice.spacing();
   const int halfCount = std::min(tyre::RoadProfile::kCapacity / 2 - 1,
                                  static_cast<int>(std::ceil(half / lattice.spacing())));
   p.ds = half / halfCount;
+  const double along = travel.head<2>().dot(p.heading);
+  const int extra = std::min(tyre::RoadProfile::kCapacity - 2 * halfCount - 1,
+                             static_cast<int>(std::ceil(std::abs(along) / p.ds)));
   // Samples past n stay zero (a state restored from its bytes has them so).
-  const int n = 2 * halfCount + 1;
+  const int n = 2 * halfCount + 1 + extra;
   if (n < p.n) {
     std::fill(p.z.begin() + n, p.z.begin() + p.n, 0.0);
     std::fill(p.cross.begin() + n, p.cross.begin() + p.n, 0.0);
   }
   p.n = n;
-  p.s0 = -halfCount * p.ds;
+  const int behind = along < 0 ? halfCount + extra : halfCount;  // samples before the origin's
+  p.s0 = -behind * p.ds;
   p.valid = false;
   const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
   if (wasLevel && levelProfile(p, zTop, reach)) return;
@@ -158,7 +166,7 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
     }
     // The friction under the wheel, or of the first ground before it where
     // the centre finds none (never the last step's).
-    if (k == halfCount || !p.valid) p.friction = at.friction;
+    if (k == behind || !p.valid) p.friction = at.friction;
     p.valid = true;
     p.z[k] = at.z;
     p.cross[k] = -p.heading.y() * at.dzdx + p.heading.x() * at.dzdy;
@@ -172,9 +180,8 @@ bool VehicleForces::levelProfile(tyre::RoadProfile& p, double zTop, double reach
   // the profile without the lattice (terrain.h, levelOver).
   const terrain::Hit h = terrain_.castRay(Eigen::Vector3d(p.origin.x(), p.origin.y(), zTop), -Eigen::Vector3d::UnitZ(), reach);
   if (!h.hit) return false;
-  const double half = -p.s0;
   terrain::Terrain::LevelQuery q;
-  const Eigen::Vector2d a = p.origin - half * p.heading, b = p.origin + half * p.heading;
+  const Eigen::Vector2d a = p.origin + p.s0 * p.heading, b = p.origin + (p.s0 + (p.n - 1) * p.ds) * p.heading;
   q.lo = a.cwiseMin(b);
   q.hi = a.cwiseMax(b);
   q.zTop = zTop;
@@ -519,7 +526,8 @@ void VehicleForces::acceptWheel(int w, const tyre::WheelKinematics& k, double re
   c.acceptedFy = out.Fy;
   c.acceptedFz = out.Fz;
   // Ground under the wheel at the end of the next step.
-  prepareGround(w, k.centre + hNext * k.centreVelocity, k.spinAxis);
+  const Eigen::Vector3d travel = hNext * k.centreVelocity;
+  prepareGround(w, k.centre + travel, k.spinAxis, travel);
   if (c.brakeCapacity > 0) {
     const double limit = c.brakeCapacity / kBrakeStiffness;
     c.brakeDeflection = std::clamp(c.brakeDeflection + h * relativeSpin, -limit, limit);

@@ -168,9 +168,12 @@ class VehicleForces final : public mb::ForceProvider {
   std::array<double, 4> cornerTravel_{};  // m, a planar model's suspension travel from static (+ bump), per evaluation
   // The ground under wheel w for the next step, at its predicted centre:
   // the plane (point contact) or the road profile and the plane it gives.
-  void prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
+  // travel: the wheel centre's move over the predicted step (sampleProfile).
+  void prepareGround(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis,
+                     const Eigen::Vector3d& travel = Eigen::Vector3d::Zero());
   tyre::ContactPlane queryGround(const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis, double radius) const;
-  void sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis);
+  void sampleProfile(int w, const Eigen::Vector3d& centre, const Eigen::Vector3d& spinAxis,
+                     const Eigen::Vector3d& travel);
   // Fills p (its line and samples set) when the terrain says the road
   // under it is level; false otherwise.
   bool levelProfile(tyre::RoadProfile& p, double zTop, double reach) const;
