@@ -131,31 +131,31 @@ StepReport BdfIntegrator::step(double h) {
 // A step that Newton cannot converge (a wheel landing, a curb strike), or
 // whose residual failed recoverably (as IDA retries a recoverable residual
 // failure with a smaller step), is rejected and taken as two half steps,
-// recursively down to h / 2^kMaxSplits. The history holds node times, so
-// uneven steps are exact BDF steps.
+// recursively, kMaxSplits times below the piece that failed. The history
+// holds node times, so uneven steps are exact BDF steps.
 //
 // A converged step that left its predictor by more than refineError (an
 // impact, a wheel landing: BdfOptions) is taken as halves the same way, to
 // refineDepth; each half is judged again, so the pieces are h / 2^k where
 // the motion turns sharply and grow back by twice at most (within the
 // stable step ratio of BDF2, 1 + sqrt 2).
-StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth) {
+StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth, int failures) {
   const bool mayRefine = depth < opt_.refineDepth && opt_.refineError > 0 && opt_.refreshWhenNotContracting;
-  StepReport rep = substep(h, jacobianDue, depth >= kMaxSplits, mayRefine);
+  StepReport rep = substep(h, jacobianDue, failures >= kMaxSplits, mayRefine);
   if (rep.refine) {
     ++st_->counters.refinements;
     const double tEnd = node(0).t + h;
-    rep = splitOnFailure(0.5 * h, false, depth + 1);
+    rep = splitOnFailure(0.5 * h, false, depth + 1, failures);
     if (!rep.ok()) return rep;
-    return splitOnFailure(tEnd - node(0).t, false, depth + 1);
+    return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures);
   }
   const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
-  if (rep.ok() || !retry || depth >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
+  if (rep.ok() || !retry || failures >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
   ++st_->counters.splits;
   const double tEnd = node(0).t + h;
-  rep = splitOnFailure(0.5 * h, false, depth + 1);
+  rep = splitOnFailure(0.5 * h, false, depth + 1, failures + 1);
   if (!rep.ok()) return rep;
-  return splitOnFailure(tEnd - node(0).t, false, depth + 1);
+  return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures + 1);
 }
 
 // A step right after refined ones starts at twice their shortest piece, not
@@ -173,11 +173,11 @@ int BdfIntegrator::carriedDepth(double h) const {
 }
 
 StepReport BdfIntegrator::splitAhead(double h, bool jacobianDue, int depth, int ahead) {
-  if (ahead == 0) return splitOnFailure(h, jacobianDue, depth);
+  if (ahead == 0) return splitOnFailure(h, jacobianDue, depth, 0);
   const double tEnd = node(0).t + h;
   StepReport rep = splitAhead(0.5 * h, jacobianDue, depth + 1, ahead - 1);
   if (!rep.ok()) return rep;
-  return splitOnFailure(tEnd - node(0).t, false, depth + 1);
+  return splitOnFailure(tEnd - node(0).t, false, depth + 1, 0);
 }
 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {

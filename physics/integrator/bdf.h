@@ -103,7 +103,9 @@ class BdfIntegrator final : public Integrator {
   // returns refine, not accepted (splitOnFailure).
   StepReport substep(double h, bool jacobianDue, bool lastResort = false, bool mayRefine = false);
   static constexpr int kMaxSplits = 4;
-  StepReport splitOnFailure(double h, bool jacobianDue, int depth);
+  // depth: halvings of the outer step so far; failures: those of them for
+  // failed attempts (kMaxSplits bounds these, refineDepth the depth).
+  StepReport splitOnFailure(double h, bool jacobianDue, int depth, int failures);
   // How many halvings the next step of h starts with: after refined steps,
   // its first piece is twice their shortest (carriedDepth); splitAhead takes
   // the first `ahead` halves so, the rest by splitOnFailure.
