@@ -54,7 +54,8 @@ int runCheck(const CheckArgs& a) {
     std::fprintf(stderr, "[%zu/%zu] %s: %s (%.1f s)\n", i + 1, files.size(), spec.name.c_str(),
                  r.passed ? "ok" : "FAILED", r.wall);
   }
-  std::printf("| case | check | outcome | us per step p50 / p99 / max | refreshed / rescued / split / refined |\n");
+  std::printf(
+      "| case | check | outcome | us per step p50 / p99 / max | refreshed / rescued / split / refined |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const scenario::CheckResult& r : results) {
     std::printf("| %s | %s | %s | %.0f / %.0f / %.0f | %ld / %ld / %ld / %ld |\n", r.name.c_str(),

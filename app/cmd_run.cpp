@@ -76,10 +76,11 @@ int runRun(const std::string& path, const std::string& out, const std::string& m
   const double perStepUs = r.steps > 0 ? 1e6 * r.wallSeconds / r.steps : 0;
   const scenario::StepCost cost = scenario::stepCost(r.stepSeconds);
   std::printf("%s: %ld steps of %.4g s, %ld Newton iterations, %ld Jacobians, %ld wheel-spin column refreshes, "
-              "%ld factorizations (%ld refreshed, %ld rescued, %ld split, %ld refined), %.2f us per step (p50 %.1f, p99 %.1f, "
-              "max %.1f), real-time factor %.0f\n",
+              "%ld factorizations (%ld refreshed, %ld rescued, %ld split, %ld refined), %.2f us per step "
+              "(p50 %.1f, p99 %.1f, max %.1f), real-time factor %.0f\n",
               spec.name.c_str(), r.steps, spec.integrator.step, c.newtonIterations, c.jacobians, c.columnRefreshes,
-              c.factorizations, c.refreshes, c.rescues, c.splits, c.refinements, perStepUs, cost.p50, cost.p99, cost.max,
+              c.factorizations, c.refreshes, c.rescues, c.splits, c.refinements, perStepUs, cost.p50, cost.p99,
+              cost.max,
               r.wallSeconds > 0 ? r.simulatedSeconds / r.wallSeconds : 0.0);
   if (spec.fidelity.automatic) {
     std::printf("fidelity auto: %ld switch%s (largest chassis jump %.2f mm, %.2f mrad; %ld refused: they would have "

@@ -34,8 +34,8 @@ void hardCasesSection(std::ostream& md, int repeats) {
      << "but too far from the predictor, taken again as halves); the difference to the "
      << "same case converged at 1 ms: RMS of yaw rate and lateral acceleration (absolute: a straight run has no "
      << "peak to divide by), largest difference of the centre of mass height; and the file's [check].\n\n"
-     << "| case | policy | us per step | p50 / p99 / max | refreshed / rescued / split / refined | yaw rate RMS (rad/s) | "
-     << "a_y RMS (m/s^2) | z_COM max (mm) | check |\n"
+     << "| case | policy | us per step | p50 / p99 / max | refreshed / rescued / split / refined | "
+     << "yaw rate RMS (rad/s) | a_y RMS (m/s^2) | z_COM max (mm) | check |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   double worstMax = 0, worstMean = 0;
   std::string worstMaxCase, worstMeanCase;
@@ -90,7 +90,8 @@ void hardCasesSection(std::ostream& md, int repeats) {
       {"whole Jacobian refreshed, full Newton with it (the policy before)", false, false, false},
       {"+ chord iterations while an impact's correction contracts", true, false, false},
       {"+ wheel-spin columns from the tyres, brakes and driveline alone by a rank-4 update", true, true, false},
-      {"+ converged steps that miss their predictor by more than refine_error taken again as halves (the default)", true, true, true}};
+      {"+ converged steps that miss their predictor by more than refine_error taken again as halves (the default)",
+       true, true, true}};
   for (const char* file : {"rough_lane_change.toml", "washboard_60.toml", "ramp_jump.toml"}) {
     const scenario::ScenarioSpec base = scenario::loadScenarioFile(asset(std::string("scenarios/hard/") + file));
     const scenario::RunResult fine = converged(base);
