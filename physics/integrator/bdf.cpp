@@ -30,6 +30,13 @@ class ScopedTimer {
 // so its first-order local error is O(h^4); each following one doubles.
 int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std::log2(1.0 / h))), 1, 12); }
 
+// The iterate d off its predictor by more than `limit` in some coordinate.
+bool missesPredictor(const Vec& d, const Vec& predicted, double limit) {
+  for (int i = 0; i < d.size(); ++i)
+    if (std::abs(d(i) - predicted(i)) > limit) return true;
+  return false;
+}
+
 }  // namespace
 
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
@@ -52,6 +59,10 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   rhs_.setZero(n);
   const int m = static_cast<int>(dae_.fastColumns().size());
   fastBaseFv_.setZero(nv, m);
+  for (KeptFactorization& k : kept_) {
+    k.Ainv.setZero(n, n);
+    k.fastBaseFv.setZero(nv, m);
+  }
   U_.setZero(nv, m);
   Z_.setZero(n, m);
   S_.setZero(m, m);
@@ -95,7 +106,7 @@ void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
   node(0) = p;
   haveBlocks_ = false;
   stepsSinceJacobian_ = 0;
-  factorizedHPrime_ = 0;
+  dropFactorizations();
 }
 
 void BdfIntegrator::bindState(IntegratorState& s) {
@@ -201,12 +212,37 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
   ++st_->counters.jacobians;
   haveBlocks_ = true;
   stepsSinceJacobian_ = 0;
-  factorizedHPrime_ = 0;  // force a factorization with the new blocks
+  dropFactorizations();  // force a factorization with the new blocks
   return EvalStatus::Ok;
+}
+
+void BdfIntegrator::dropFactorizations() {
+  factorizedHPrime_ = 0;
+  for (KeptFactorization& k : kept_) k.hPrime = 0;
 }
 
 void BdfIntegrator::factorize(double hp) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
+  factorizeFor(hp);
+}
+
+void BdfIntegrator::factorizeFor(double hp) {
+  for (const KeptFactorization& k : kept_) {
+    if (k.hPrime == 0 || std::abs(hp - k.hPrime) > 1e-9 * hp) continue;
+    Ainv_ = k.Ainv;
+    fastBaseFv_ = k.fastBaseFv;
+    factorizedHPrime_ = k.hPrime;
+    lowRank_ = false;
+    const std::vector<int>& fast = dae_.fastColumns();
+    bool same = true;
+    for (int c = 0; c < static_cast<int>(fast.size()) && same; ++c) same = dx_.Fv.col(fast[c]) == fastBaseFv_.col(c);
+    if (same || updateFastColumns(hp)) return;
+    break;  // near singular by the update: an LU of the whole matrix
+  }
+  factorizeAnew(hp);
+}
+
+void BdfIntegrator::factorizeAnew(double hp) {
   const int nv = n_.nv, nc = n_.nc;
   A_.topLeftCorner(nv, nv) = Fa_ + hp * dx_.Fv + (hp * hp) * dx_.Fq;
   A_.topRightCorner(nv, nc) = J_.transpose();
@@ -219,6 +255,11 @@ void BdfIntegrator::factorize(double hp) {
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) fastBaseFv_.col(k) = dx_.Fv.col(fast[k]);
   lowRank_ = false;
+  KeptFactorization& kept = kept_[nextKept_];
+  nextKept_ = (nextKept_ + 1) % kKeptFactorizations;
+  kept.hPrime = hp;
+  kept.Ainv = Ainv_;
+  kept.fastBaseFv = fastBaseFv_;
 }
 
 // The fast columns of F_v re-evaluated at the iterate; the factorized matrix
@@ -230,7 +271,7 @@ void BdfIntegrator::factorize(double hp) {
 EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual& base, Message& msg) {
   ScopedTimer timer(opt_.timing, timers_.jacobian);
   const std::vector<int>& fast = dae_.fastColumns();
-  const int m = static_cast<int>(fast.size()), nv = n_.nv;
+  const int m = static_cast<int>(fast.size());
   if (fastParts_) {  // the force laws' part at this iterate (its residual's state)
     dae_.fastColumnParts(t, partsNow_);
     for (int k = 0; k < m; ++k) dx_.Fv.col(fast[k]) = slowFv_.col(k) + partsNow_.col(k);
@@ -244,25 +285,26 @@ EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual
   }
   ++st_->counters.columnRefreshes;
   if (std::abs(hp - factorizedHPrime_) > 1e-9 * hp) {
-    factorize(hp);  // a new step size: the whole matrix anyway
+    factorizeFor(hp);  // a new step size: a kept matrix for it, or a new one
     return EvalStatus::Ok;
   }
-  for (int k = 0; k < m; ++k) {
-    U_.col(k) = hp * (dx_.Fv.col(fast[k]) - fastBaseFv_.col(k));
-    A_.col(fast[k]).head(nv) = Fa_.col(fast[k]) + hp * dx_.Fv.col(fast[k]) + (hp * hp) * dx_.Fq.col(fast[k]);
-  }
+  // A nearly singular update (the refreshed matrix itself near singular):
+  // factorize the whole matrix instead.
+  if (!updateFastColumns(hp)) factorizeAnew(hp);
+  return EvalStatus::Ok;
+}
+
+bool BdfIntegrator::updateFastColumns(double hp) {
+  const std::vector<int>& fast = dae_.fastColumns();
+  const int m = static_cast<int>(fast.size()), nv = n_.nv;
+  for (int k = 0; k < m; ++k) U_.col(k) = hp * (dx_.Fv.col(fast[k]) - fastBaseFv_.col(k));
   Z_.noalias() = Ainv_.leftCols(nv) * U_;
   for (int k = 0; k < m; ++k) S_.row(k) = Z_.row(fast[k]);
   S_ += Mat::Identity(m, m);
   sLu_.compute(S_);
-  // A nearly singular update (the refreshed matrix itself near singular):
-  // factorize the whole matrix instead.
-  if (!(std::abs(sLu_.determinant()) > 1e-12)) {
-    factorize(hp);
-    return EvalStatus::Ok;
-  }
+  if (!(std::abs(sLu_.determinant()) > 1e-12)) return false;
   lowRank_ = true;
-  return EvalStatus::Ok;
+  return true;
 }
 
 // x -= Z (I + E^T Z)^-1 E^T x: the Woodbury correction of x = A^-1 b.
@@ -580,7 +622,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   // The predictor's miss (from the second step on: the first's predictor is
   // a constant) measures the step's local error (Milne's device: BDF2's is
   // about 2/9 of it); too large, the step is taken again as halves.
-  if (mayRefine && st_->count > 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
+  if (mayRefine && st_->count > 1 && missesPredictor(d_, dPred_, opt_.refineError)) {
     rep.refine = true;
     return rep;
   }

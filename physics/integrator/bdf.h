@@ -89,8 +89,6 @@ class BdfIntegrator final : public Integrator {
   const IntegratorState& state() const override { return *st_; }
   void markJacobianStale() override { haveBlocks_ = false; }
   const BdfOptions& options() const { return opt_; }
-  // Condition-free view of the last iteration matrix (for tests).
-  const Mat& iterationMatrix() const { return A_; }
 
  private:
   static_assert(IntegratorState::kSlots == kMaxBdfOrder + 2, "the ring holds the highest order's history");
@@ -112,7 +110,16 @@ class BdfIntegrator final : public Integrator {
   int carriedDepth(double h) const;
   StepReport splitAhead(double h, bool jacobianDue, int depth, int ahead);
   EvalStatus evaluateJacobian(double t, Message& msg);
-  void factorize(double hPrime);
+  // The iteration matrix for h' (its inverse): one kept for this h' since
+  // the blocks were evaluated, brought to the fast columns of now by a
+  // low-rank update, or a new LU.
+  void factorize(double hPrime);  // timed (timers_.jacobian); the two below are not
+  void factorizeFor(double hPrime);
+  void factorizeAnew(double hPrime);
+  void dropFactorizations();
+  // The Woodbury update from the factorized fast columns to dx_.Fv's: false
+  // where the updated matrix is near singular.
+  bool updateFastColumns(double hPrime);
   // base: the residual at the iterate (the Newton iteration's own).
   EvalStatus refreshFastColumns(double t, double hPrime, const Residual& base, Message& msg);
   // x = A^-1 b for the factorized A -> the refreshed matrix's solution, in its
@@ -144,6 +151,16 @@ class BdfIntegrator final : public Integrator {
   StateDerivatives dx_;    // F_q, F_v and the constraint-level derivatives
   Mat Fa_, J_;             // (nv x nv), (nc x nv)
   Mat A_, Ainv_;           // (nv+nc)^2
+  // The last few factorizations of these blocks, by h': a refined step's
+  // halves and the steps after them come back to the same few h', and each
+  // would otherwise cost an LU and an inverse (dropped with the blocks).
+  struct KeptFactorization {
+    double hPrime = 0;  // 0: empty
+    Mat Ainv, fastBaseFv;
+  };
+  static constexpr int kKeptFactorizations = 4;
+  std::array<KeptFactorization, kKeptFactorizations> kept_;
+  int nextKept_ = 0;
   Eigen::PartialPivLU<Mat> lu_;
   // Refreshed fast columns as a rank-m update of the factorized matrix
   // (refreshFastColumns): their F_v columns when it was factorized, the
