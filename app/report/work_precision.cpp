@@ -83,6 +83,34 @@ std::vector<const Point*> paretoFront(const std::vector<Point>& pts) {
 struct WpCase {
   std::string name, file;
   std::string vehicle = "sedan.toml";
+  bool pointOnRelief = false;  // relief felt by the point contact (a case the enveloping tyre also runs)
+};
+
+// What decides a recommendation: per setting, the worst error over the
+// cases, the total cost and whether any run diverged.
+struct Tally {
+  std::map<std::string, double> worstError, totalCost;
+  std::map<std::string, bool> everDiverged;
+  void add(const Point& p) {
+    worstError[p.label] = std::max(worstError[p.label], p.diverged ? INFINITY : p.error);
+    totalCost[p.label] += p.cost;
+    everDiverged[p.label] = everDiverged[p.label] || p.diverged;
+  }
+  // Among settings whose step is the driver's tick or longer (one step per
+  // 10 ms tick: the cheapest interactive loop), the cheapest in total that
+  // is within 1 % on every case and never diverges; empty if none.
+  std::string pick(const std::vector<Setting>& all) const {
+    std::string best;
+    double bestCost = INFINITY;
+    for (const Setting& s : all) {
+      if (s.step < 0.01 - 1e-12 || !worstError.count(s.label)) continue;
+      if (!everDiverged.at(s.label) && worstError.at(s.label) <= 1.0 && totalCost.at(s.label) < bestCost) {
+        best = s.label;
+        bestCost = totalCost.at(s.label);
+      }
+    }
+    return best;
+  }
 };
 
 }  // namespace
@@ -90,10 +118,10 @@ struct WpCase {
 void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
   const std::vector<WpCase> cases = {{"J-turn", "jturn.toml"},
                                      {"lane change", "lane_change.toml"},
-                                     {"curb strike", "hard/curb_strike.toml"},
+                                     {"curb strike", "hard/curb_strike.toml", "sedan.toml", true},
                                      {"curb strike, enveloping tyres", "hard/curb_strike.toml", "sedan_envelope.toml"},
                                      {"sine with dwell", "hard/sine_with_dwell_80.toml"},
-                                     {"rough road", "hard/rough_lane_change.toml"},
+                                     {"rough road", "hard/rough_lane_change.toml", "sedan.toml", true},
                                      {"rough road, enveloping tyres", "hard/rough_lane_change.toml", "sedan_envelope.toml"}};
   const std::vector<Setting> all = settings();
   md << "## 5c. Work-precision diagrams\n\n"
@@ -106,8 +134,7 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
      << "200 steps); at 10 ms BDF2 with Newton 1, 3 and to tolerance and the Jacobian every step or every 20; RK4 "
      << "and semi-implicit Euler at 1, 2, 5 and 10 ms. A diverged run is drawn at the top of its panel "
      << "(crosses) and listed below, not dropped.\n\n";
-  std::map<std::string, double> worstError, totalCost;
-  std::map<std::string, bool> everDiverged;
+  Tally everyCase, enveloping;  // enveloping: relief on enveloping tyres only
   std::vector<std::string> dataFiles;
   md << "| case | Pareto front, cheapest first (cost ms/s, error %) | diverged |\n|---|---|---|\n";
   for (const WpCase& c : cases) {
@@ -131,9 +158,8 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
       p.cost = 1e3 * r.wallSeconds / std::max(1e-9, r.simulatedSeconds);
       p.error = r.ok ? relativeError(fine.samples, r.samples) : 0;
       pts.push_back(p);
-      worstError[s.label] = std::max(worstError[s.label], p.diverged ? INFINITY : p.error);
-      totalCost[s.label] += p.cost;
-      everDiverged[s.label] = everDiverged[s.label] || p.diverged;
+      everyCase.add(p);
+      if (!c.pointOnRelief) enveloping.add(p);
     }
     // Data for the plot: one block per family, then the diverged points.
     const std::string data = imageDir + "/wp_" + std::to_string(dataFiles.size()) + ".dat";
@@ -173,21 +199,18 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
       }
     md << (first ? "none" : "") << " |\n";
   }
-  // The recommendation: among settings whose step is the driver's tick or
-  // longer (one step per 10 ms tick: the cheapest interactive loop), the
-  // cheapest in total that is within 1 % on every case and never diverges.
-  std::string pick;
-  double pickCost = INFINITY;
-  for (const Setting& s : all)
-    if (s.step >= 0.01 - 1e-12 && !everDiverged[s.label] && worstError[s.label] <= 1.0 && totalCost[s.label] < pickCost) {
-      pick = s.label;
-      pickCost = totalCost[s.label];
-    }
+  // The recommendations: the worst case decides, not the mean (a driving
+  // simulator needs the tick held on every road).
+  const std::string pick = everyCase.pick(all), pickEnvelope = enveloping.pick(all);
   md << "\nRecommended interactive setting: **" << (pick.empty() ? std::string("none within 1 %") : pick) << "**";
   if (!pick.empty())
     md << ": of the settings with one step per 10 ms tick or fewer, the cheapest over these cases that never "
-       << "diverges and stays within 1 % of peak on every one (worst " << fmt("%.2g %%", worstError[pick])
+       << "diverges and stays within 1 % of peak on every one (worst " << fmt("%.2g %%", everyCase.worstError.at(pick))
        << "); a driving simulator needs the tick held on every road, so the worst case decides, not the mean";
+  md << ". With enveloping tyres on relief (the curb and the rough road on sedan_envelope.toml in place of the "
+     << "point contact): **" << (pickEnvelope.empty() ? std::string("none within 1 %") : pickEnvelope) << "**";
+  if (!pickEnvelope.empty())
+    md << " (worst " << fmt("%.2g %%", enveloping.worstError.at(pickEnvelope)) << ")";
   md << ".\n\n";
   // The figure: one log-log panel per case.
   const std::string png = imageDir + "/work_precision.png";
