@@ -30,13 +30,6 @@ class ScopedTimer {
 // so its first-order local error is O(h^4); each following one doubles.
 int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std::log2(1.0 / h))), 1, 12); }
 
-// The iterate d off its predictor by more than `limit` in some coordinate.
-bool missesPredictor(const Vec& d, const Vec& predicted, double limit) {
-  for (int i = 0; i < d.size(); ++i)
-    if (std::abs(d(i) - predicted(i)) > limit) return true;
-  return false;
-}
-
 }  // namespace
 
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
@@ -255,8 +248,13 @@ void BdfIntegrator::factorizeAnew(double hp) {
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) fastBaseFv_.col(k) = dx_.Fv.col(fast[k]);
   lowRank_ = false;
-  KeptFactorization& kept = kept_[nextKept_];
-  nextKept_ = (nextKept_ + 1) % kKeptFactorizations;
+  // In place of one kept for this h' (its update was near singular), or of
+  // the oldest.
+  int slot = nextKept_;
+  for (int i = 0; i < kKeptFactorizations; ++i)
+    if (kept_[i].hPrime != 0 && std::abs(hp - kept_[i].hPrime) <= 1e-9 * hp) slot = i;
+  if (slot == nextKept_) nextKept_ = (nextKept_ + 1) % kKeptFactorizations;
+  KeptFactorization& kept = kept_[slot];
   kept.hPrime = hp;
   kept.Ainv = Ainv_;
   kept.fastBaseFv = fastBaseFv_;
@@ -622,7 +620,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   // The predictor's miss (from the second step on: the first's predictor is
   // a constant) measures the step's local error (Milne's device: BDF2's is
   // about 2/9 of it); too large, the step is taken again as halves.
-  if (mayRefine && st_->count > 1 && missesPredictor(d_, dPred_, opt_.refineError)) {
+  if (mayRefine && st_->count > 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
     rep.refine = true;
     return rep;
   }
