@@ -148,18 +148,21 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth, 
   StepReport rep = substep(h, jacobianDue, failures >= kMaxSplits, mayRefine);
   if (rep.refine) {
     ++st_->counters.refinements;
-    const double tEnd = node(0).t + h;
-    rep = splitOnFailure(0.5 * h, false, depth + 1, failures);
-    if (!rep.ok()) return rep;
-    return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures);
+    return halves(h, depth, failures);
   }
   const bool retry = rep.status == StepStatus::Diverged || (rep.status == StepStatus::EvaluationFailed && rep.recoverable);
   if (rep.ok() || !retry || failures >= kMaxSplits || !opt_.refreshWhenNotContracting) return rep;
   ++st_->counters.splits;
+  return halves(h, depth, failures + 1);
+}
+
+// [t, t + h] as two halves, each judged (and split again) one level deeper;
+// the second lands exactly on t + h.
+StepReport BdfIntegrator::halves(double h, int depth, int failures) {
   const double tEnd = node(0).t + h;
-  rep = splitOnFailure(0.5 * h, false, depth + 1, failures + 1);
+  const StepReport rep = splitOnFailure(0.5 * h, false, depth + 1, failures);
   if (!rep.ok()) return rep;
-  return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures + 1);
+  return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures);
 }
 
 // A step right after refined ones starts at twice their shortest piece, not
@@ -168,6 +171,7 @@ StepReport BdfIntegrator::splitOnFailure(double h, bool jacobianDue, int depth, 
 // its state cuts the same way).
 int BdfIntegrator::carriedDepth(double h) const {
   if (opt_.refineDepth <= 0 || !(opt_.refineError > 0) || !opt_.refreshWhenNotContracting) return 0;
+  if (st_->count > 1 && node(0).t - node(1).t >= h * (1 - 1e-9)) return 0;  // the last step was whole
   double shortest = h;
   for (int i = 0; i + 1 < st_->count && node(i + 1).t >= node(0).t - h * (1 + 1e-9); ++i)
     shortest = std::min(shortest, node(i).t - node(i + 1).t);
@@ -220,6 +224,10 @@ void BdfIntegrator::factorize(double hp) {
 }
 
 void BdfIntegrator::factorizeFor(double hp) {
+  if (!opt_.keepFactorizations) {
+    factorizeAnew(hp);
+    return;
+  }
   for (const KeptFactorization& k : kept_) {
     if (k.hPrime == 0 || std::abs(hp - k.hPrime) > 1e-9 * hp) continue;
     Ainv_ = k.Ainv;

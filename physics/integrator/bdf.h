@@ -54,6 +54,9 @@ struct BdfOptions {
   // columns (Dae::fastColumns) before the whole Jacobian.
   bool chordContinuation = true;
   bool fastColumnRescue = true;
+  // The factorized matrices of the last few h' kept since the Jacobian (off:
+  // an LU and inverse at every change of h').
+  bool keepFactorizations = true;
   // A converged step whose solution lies further than refineError (m, rad,
   // the largest over the coordinates' increments) from its predictor is
   // not accepted but taken as two halves, recursively, at most refineDepth
@@ -104,6 +107,7 @@ class BdfIntegrator final : public Integrator {
   // depth: halvings of the outer step so far; failures: those of them for
   // failed attempts (kMaxSplits bounds these, refineDepth the depth).
   StepReport splitOnFailure(double h, bool jacobianDue, int depth, int failures);
+  StepReport halves(double h, int depth, int failures);
   // How many halvings the next step of h starts with: after refined steps,
   // its first piece is twice their shortest (carriedDepth); splitAhead takes
   // the first `ahead` halves so, the rest by splitOnFailure.
