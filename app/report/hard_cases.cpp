@@ -93,7 +93,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
       {"+ wheel-spin columns from the tyres, brakes and driveline alone by a rank-4 update", true, true, false, false},
       {"+ converged steps that miss their predictor by more than refine_error taken again as halves", true, true, true,
        false},
-      {"+ the factorized matrices of the last four h' kept, each brought to the refreshed columns by its update "
+      {"+ the factorized matrices of the last eight h' kept, each brought to the refreshed columns by its update "
        "(the default)",
        true, true, true, true}};
   for (const char* file : {"rough_lane_change.toml", "washboard_60.toml", "ramp_jump.toml"}) {

@@ -158,11 +158,13 @@ class BdfIntegrator final : public Integrator {
   // The last few factorizations of these blocks, by h': a refined step's
   // halves and the steps after them come back to the same few h', and each
   // would otherwise cost an LU and an inverse (dropped with the blocks).
+  // Eight: a washboard's pieces use eight h' (four missed at most steps;
+  // sixteen saves no more).
   struct KeptFactorization {
     double hPrime = 0;  // 0: empty
     Mat Ainv, fastBaseFv;
   };
-  static constexpr int kKeptFactorizations = 4;
+  static constexpr int kKeptFactorizations = 8;
   std::array<KeptFactorization, kKeptFactorizations> kept_;
   int nextKept_ = 0;
   Eigen::PartialPivLU<Mat> lu_;
