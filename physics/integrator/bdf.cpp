@@ -30,6 +30,10 @@ class ScopedTimer {
 // so its first-order local error is O(h^4); each following one doubles.
 int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std::log2(1.0 / h))), 1, 12); }
 
+// Times accumulate round-off, so h' of equal steps differs in the last
+// bits: the same h' for the iteration matrix within 1e-9 of it (0: none).
+bool sameHPrime(double hp, double other) { return other != 0 && std::abs(hp - other) <= 1e-9 * hp; }
+
 }  // namespace
 
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
@@ -229,7 +233,7 @@ void BdfIntegrator::factorizeFor(double hp) {
     return;
   }
   for (const KeptFactorization& k : kept_) {
-    if (k.hPrime == 0 || std::abs(hp - k.hPrime) > 1e-9 * hp) continue;
+    if (!sameHPrime(hp, k.hPrime)) continue;
     Ainv_ = k.Ainv;
     fastBaseFv_ = k.fastBaseFv;
     factorizedHPrime_ = k.hPrime;
@@ -256,11 +260,12 @@ void BdfIntegrator::factorizeAnew(double hp) {
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) fastBaseFv_.col(k) = dx_.Fv.col(fast[k]);
   lowRank_ = false;
+  if (!opt_.keepFactorizations) return;
   // In place of one kept for this h' (its update was near singular), or of
   // the oldest.
   int slot = nextKept_;
   for (int i = 0; i < kKeptFactorizations; ++i)
-    if (kept_[i].hPrime != 0 && std::abs(hp - kept_[i].hPrime) <= 1e-9 * hp) slot = i;
+    if (sameHPrime(hp, kept_[i].hPrime)) slot = i;
   if (slot == nextKept_) nextKept_ = (nextKept_ + 1) % kKeptFactorizations;
   KeptFactorization& kept = kept_[slot];
   kept.hPrime = hp;
@@ -290,7 +295,7 @@ EvalStatus BdfIntegrator::refreshFastColumns(double t, double hp, const Residual
     }
   }
   ++st_->counters.columnRefreshes;
-  if (std::abs(hp - factorizedHPrime_) > 1e-9 * hp) {
+  if (!sameHPrime(hp, factorizedHPrime_)) {
     factorizeFor(hp);  // a new step size: a kept matrix for it, or a new one
     return EvalStatus::Ok;
   }
@@ -609,9 +614,8 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
     fresh = true;
     rep.jacobianEvaluated = true;
   }
-  // Times accumulate round-off, so h' of equal steps differs in the last
-  // bits: refactor only for a real change of step or order.
-  if (std::abs(c.hPrime - factorizedHPrime_) > 1e-9 * c.hPrime) factorize(c.hPrime);
+  // Refactor only for a real change of step or order.
+  if (!sameHPrime(c.hPrime, factorizedHPrime_)) factorize(c.hPrime);
   rep.status = StepStatus::Ok;
   const bool fixedCount = opt_.newtonIterations > 0;
   NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
