@@ -126,6 +126,29 @@ bench_table() {
     echo "| paper.toml with \`--out\` (a telemetry row every step): the stepping thread | $(( (main6 - main1) / 500 )) | | | |"
     echo "| ... and the telemetry writer's thread (formatting the row) | $(( (writer6 - writer1) / 500 )) | | | |"
     echo
+    # The proving-ground lap (issue 25's `auto` target, 5g's wall-time ratio)
+    # in instructions: a whole driver's tick (the path follower, the rung's
+    # policy and its scan of the road ahead, the step), 176 s less 1 s (the
+    # start-up, and under `auto` the ladder certificate's runs, alike in both).
+    lapIr() {  # lapIr FIDELITY DURATION
+      valgrind --tool=callgrind --collect-atstart=no "--toggle-collect=bdfcar::scenario::Run::tick(*" \
+        --callgrind-out-file="$tmp/cg.lap.$1.$2" "$build/app/bdfcar" run \
+        assets/scenarios/proving_ground/circuit_lap.toml --fidelity "$1" --duration "$2" 2>&1 |
+        awk '/Collected/ { print $4 }'
+    }
+    lapTick() {
+      local short long
+      short=$(lapIr "$1" 1)  # first: it also fills the derivation cache the long run reads
+      long=$(lapIr "$1" 176)
+      echo $(( (long - short) / 17500 ))
+    }
+    lapAuto=$(lapTick auto) lapLinkage=$(lapTick linkage)
+    echo "The proving-ground lap (circuit_lap.toml, the first 176 s less the first 1 s: 17,500 ticks of the"
+    echo "driver, each its path follower, the rung's policy with its scan of the road ahead, and the step;"
+    echo "\`--toggle-collect\` on Run::tick): \`--fidelity auto\` $lapAuto instructions per tick, the linkage"
+    echo "$lapLinkage, ratio $(awk -v a="$lapAuto" -v b="$lapLinkage" 'BEGIN { printf "%.3f", a / b }') (issue 25's target for the"
+    echo "lap's wall-time ratio, section 5g: 0.25)."
+    echo
     echo "Where a step's instructions go (paper.toml; inclusive, % of all instructions inside"
     echo "BdfIntegrator::step over the run, settling included; \`--toggle-collect\` on that function):"
     echo
