@@ -15,7 +15,7 @@ namespace {
 
 std::string policyCells(const RunSummary& r) {
   const integ::Counters& c = r.result.counters;
-  const scenario::StepCost cost = scenario::stepCost(r.result.stepSeconds);
+  const scenario::StepCost& cost = r.stepCost;
   return fmt("%.0f", r.wallPerStepUs) + " | " + fmt("%.0f", cost.p50) + " / " + fmt("%.0f", cost.p99) + " / " +
          fmt("%.0f", cost.max) + " | " + std::to_string(c.refreshes) + " / " + std::to_string(c.rescues) + " / " +
          std::to_string(c.splits) + " / " + std::to_string(c.refinements);
@@ -30,7 +30,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
      << "the Jacobian refreshed by a rank-4 update, Newton on to tolerance with them, then a split step; "
      << "docs/DESIGN.md, integrator policy); *published*: the paper's fixed count alone (`--as-published`). "
      << "Wall time per step: the mean (median of " << repeats << " runs, no telemetry) and each "
-     << "step's p50 / p99 / max (us, the last run); refreshed / rescued / split / refined steps (refined: converged "
+     << "step's p50 / p99 / max (us; each the median of the " << repeats << " runs' own); refreshed / rescued / split / refined steps (refined: converged "
      << "but too far from the predictor, taken again as halves); the difference to the "
      << "same case converged at 1 ms: RMS of yaw rate and lateral acceleration (absolute: a straight run has no "
      << "peak to divide by), largest difference of the centre of mass height; and the file's [check].\n\n"
@@ -65,7 +65,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
          << (check.passed ? "ok" : "fails: " + (check.failures.empty() ? std::string("?") : check.failures.front()))
          << " |\n";
       if (!published) {
-        const double mx = scenario::stepCost(r.result.stepSeconds).max;
+        const double mx = r.stepCost.max;
         if (mx > worstMax) worstMax = mx, worstMaxCase = base.name;
         if (r.wallPerStepUs > worstMean) worstMean = r.wallPerStepUs, worstMeanCase = base.name;
       }
@@ -112,7 +112,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
         continue;
       }
       const integ::Counters& c = r.result.counters;
-      const scenario::StepCost cost = scenario::stepCost(r.result.stepSeconds);
+      const scenario::StepCost& cost = r.stepCost;
       const auto diff = [&](const char* col) {
         return compareAt(column(fine.samples, "t"), column(fine.samples, col), column(r.result.samples, "t"),
                          column(r.result.samples, col))

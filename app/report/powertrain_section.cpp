@@ -73,7 +73,7 @@ void provingGroundLap(std::ostream& md, int repeats) {
     return;
   }
   const scenario::RunResult& a = scene.result;
-  const scenario::StepCost ca = scenario::stepCost(a.stepSeconds), cl = scenario::stepCost(linkage.result.stepSeconds);
+  const scenario::StepCost& ca = scene.stepCost, &cl = linkage.stepCost;
   const std::vector<double> t = column(a.samples, "t"), tl = column(linkage.result.samples, "t");
   const Difference yaw = compareAt(tl, column(linkage.result.samples, "yawrate"), t, column(a.samples, "yawrate"));
   const Difference ay = compareAt(tl, column(linkage.result.samples, "ay"), t, column(a.samples, "ay"));
@@ -85,7 +85,7 @@ void provingGroundLap(std::ostream& md, int repeats) {
      << "ahead has curbs). Median over " << repeats << " runs of the wall time per step (no telemetry): "
      << fmt("%.1f", scene.wallPerStepUs) << " us, against " << fmt("%.1f", linkage.wallPerStepUs)
      << " us for the same lap on the linkage throughout (ratio "
-     << fmt("%.2f", scene.wallPerStepUs / linkage.wallPerStepUs) << "); per step p50 / p99 / max "
+     << fmt("%.2f", scene.wallPerStepUs / linkage.wallPerStepUs) << "); per step p50 / p99 / max (each the median of the runs' own) "
      << fmt("%.1f", ca.p50) << " / " << fmt("%.1f", ca.p99) << " / " << fmt("%.0f", ca.max) << " us (linkage "
      << fmt("%.1f", cl.p50) << " / " << fmt("%.1f", cl.p99) << " / " << fmt("%.0f", cl.max) << " us). The "
      << "scene's lap against the linkage's: yaw rate " << fmt("%.2f", yaw.rmsPercent) << " %, lateral "

@@ -65,7 +65,7 @@ std::vector<std::string> hardCaseFiles() {
 
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
   RunSummary s;
-  std::vector<double> perStep;
+  std::vector<double> perStep, p50, p99, max;
   // The timed runs sample nothing: a telemetry row costs about a residual
   // evaluation (sampleVehicle), which would hide what the model costs.
   for (int i = 0; i < repeats; ++i) {
@@ -76,14 +76,22 @@ RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
     const scenario::RunResult timed = scenario::runScenario(sim, o);
     if (!timed.ok) break;
     perStep.push_back(1e6 * timed.wallSeconds / std::max(1L, timed.steps));
+    const scenario::StepCost c = scenario::stepCost(timed.stepSeconds);
+    p50.push_back(c.p50);
+    p99.push_back(c.p99);
+    max.push_back(c.max);
   }
   {
     scenario::Simulation sim(spec);
     s.result = scenario::runScenario(sim, scenario::RunOptions{});
   }
+  auto median = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
   if (!perStep.empty()) {
-    std::sort(perStep.begin(), perStep.end());
-    s.wallPerStepUs = perStep[perStep.size() / 2];
+    s.wallPerStepUs = median(perStep);
+    s.stepCost = {median(p50), median(p99), median(max)};
   }
   return s;
 }

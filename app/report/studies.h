@@ -28,6 +28,9 @@ Difference compareAt(const std::vector<double>& refTime, const std::vector<doubl
 struct RunSummary {
   scenario::RunResult result;
   double wallPerStepUs = 0;  // median over repeats of wall time per manoeuvre step, no telemetry
+  // Each of the timed runs' per-step p50 / p99 / max, the median over the
+  // repeats of each (a single run's max is one scheduler hiccup away).
+  scenario::StepCost stepCost;
 };
 
 // Runs a scenario `repeats` times without samples (as `bdfcar run` with no
