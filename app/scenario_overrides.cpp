@@ -26,7 +26,8 @@ void addOverrideOptions(CLI::App& cmd, ScenarioOverrides& ov) {
       ->check(CLI::Range(1e-3, 0.1));
   cmd.add_option("--integrator", ov.integrator, "bdf, rk4 or euler")->check(CLI::IsMember({"bdf", "rk4", "euler"}));
   cmd.add_option("--order", ov.order, "BDF order")->check(CLI::Range(1, 5));
-  cmd.add_option("--newton", ov.newton, "Newton iterations per step (0 = iterate to tolerance)")->check(CLI::Range(0, 50));
+  cmd.add_option("--newton", ov.newton, "Newton iterations per step (0 = iterate to tolerance), on every rung (the scenario's "
+                 "integrator.newton_iterations is the linkage's, fidelity.newton_iterations the derived rungs')")->check(CLI::Range(0, 50));
   cmd.add_option("--jacobian-every", ov.jacobianEvery, "Jacobian every N steps (0 = first step only)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--fidelity", ov.fidelity,
@@ -79,7 +80,7 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
                 : *ov.integrator == "rk4" ? scenario::IntegratorMethod::Rk4
                                           : scenario::IntegratorMethod::SemiImplicitEuler;
   if (ov.order) bdf.order = *ov.order;
-  if (ov.newton) bdf.newtonIterations = *ov.newton;
+  if (ov.newton) bdf.newtonIterations = spec.fidelity.newtonIterations = *ov.newton;
   if (ov.jacobianEvery) bdf.jacobianEvery = *ov.jacobianEvery;
   if (ov.vehicle) spec.vehicleFile = std::filesystem::path(*ov.vehicle).lexically_normal().string();
   if (ov.duration) spec.duration = *ov.duration;
@@ -93,7 +94,10 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.fidelity) scenario::parseFidelity(*ov.fidelity, spec.fidelity);
   if (ov.errorBudget) spec.fidelity.errorBudget = *ov.errorBudget / 100.0;
   if (ov.settle) spec.settleTime = *ov.settle;
-  if (ov.asPublished) bdf.refreshWhenNotContracting = false;
+  if (ov.asPublished) {  // the paper's fixed count on every rung
+    bdf.refreshWhenNotContracting = false;
+    spec.fidelity.newtonIterations = bdf.newtonIterations;
+  }
   if (scenario::stepsPerTick(spec.tick, it.step) == 0) {
     char text[256];
     std::snprintf(text, sizeof text,

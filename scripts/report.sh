@@ -86,12 +86,14 @@ bench_table() {
     # scan of the road ahead and its switches.
     declare -A linkageIr
     for run in "paper linkage <=70000" "sedan linkage <=100000" "paper kinematic -" "sedan kinematic <=25000" \
-               "sedan kinematic -  fidelity.kinematic_equations=multibody" "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" "sedan auto -"; do
+               "sedan kinematic -  fidelity.kinematic_equations=multibody" "sedan kinematic - fidelity.newton_iterations=2" \
+               "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" \
+               "sedan planar - fidelity.newton_iterations=2" "sedan auto -"; do
       set -- $run
       v=$1 f=$2 target=$3 extra=()
       [ -n "${4:-}" ] && extra=(--set "$4")
       ir() {
-        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f${extra:+.mb}.$1" "$build/app/bdfcar" run \
+        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f${4:+.${4//[^a-z0-9]/_}}.$1" "$build/app/bdfcar" run \
           assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" "${extra[@]}" --duration "$1" 2>&1 |
           awk '/Collected/ { print $4 }'
       }
@@ -103,7 +105,10 @@ bench_table() {
       }
       label="$v.toml"
       [ "$f" != linkage ] && label="$v.toml, \`--fidelity $f\`"
-      [ ${#extra[@]} -gt 0 ] && label="$label, the same equations in the multibody form (\`--set $4\`)"
+      case "${4:-}" in
+        *_equations=multibody) label="$label, the same equations in the multibody form (\`--set $4\`)" ;;
+        fidelity.newton_iterations=*) label="$label, the paper's fixed Newton count (\`--set $4\`; the rungs' default: to tolerance)" ;;
+      esac
       perStep=$(( ($(ir 6) - $(ir 1)) / 500 ))
       [ "$f" = linkage ] && linkageIr[$v]=$perStep
       share=$(awk -v a="$perStep" -v b="${linkageIr[$v]}" 'BEGIN { printf "%.2f", a / b }')
@@ -181,7 +186,7 @@ bench_table() {
     }
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
     echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
-    echo "residual (two per step), the tyres, and the BDF step's own vector work and back-substitution,"
+    echo "residual (about one per step: Newton to tolerance), the tyres, and the BDF step's own vector work and back-substitution,"
     echo "which the rungs share: what is left to cut for the 6k target."
     echo
     profileTable planar
@@ -190,7 +195,7 @@ bench_table() {
     echo "physics/vehicle/kinematic_car.h; the same measure): the corners' tables (SplineGrid::eval: the"
     echo "steered corners' are bicubic in travel and rack, six pose components and the springs' lengths"
     echo "with their first and second derivatives), the corners' motion from them (cornerMotion) and the"
-    echo "residual's own algebra, for each of the step's two residuals (a steered corner's table contracted along the rack once a step)."
+    echo "residual's own algebra, for each of the step's residuals (about one: Newton to tolerance; a steered corner's table contracted along the rack once a step)."
     echo
     profileTable kinematic
     echo

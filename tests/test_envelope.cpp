@@ -16,6 +16,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "run_error.h"
 #include "scenario/run.h"
 #include "scenario/scenario_spec.h"
 #include "terrain/height_lattice.h"
@@ -24,6 +25,8 @@
 namespace bdfcar {
 namespace {
 
+using testing_run_error::rmsPercent;
+using testing_run_error::yawAndLateralRmsPercent;
 using tyre::Envelope;
 using tyre::RoadProfile;
 
@@ -185,33 +188,9 @@ scenario::ScenarioSpec curbOnEnvelopes(double step, int newton, int jacobianEver
   return s;
 }
 
-// RMS of a sampled quantity against the reference (interpolated linearly
-// to the run's samples), % of the reference's peak.
-template <class Of>
-double rmsPercent(const scenario::RunResult& ref, const scenario::RunResult& run, Of of) {
-  double sum = 0, peak = 0;
-  std::size_t j = 0;
-  for (const auto& s : run.samples) {
-    while (j + 1 < ref.samples.size() && ref.samples[j + 1].t <= s.t) ++j;
-    const auto& a = ref.samples[j];
-    const auto& b = ref.samples[std::min(j + 1, ref.samples.size() - 1)];
-    const double f = b.t > a.t ? std::clamp((s.t - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
-    const double x = (1 - f) * of(a) + f * of(b);
-    sum += (of(s) - x) * (of(s) - x);
-  }
-  for (const auto& s : ref.samples) peak = std::max(peak, std::abs(of(s)));
-  return 100.0 * std::sqrt(sum / static_cast<double>(run.samples.size())) / peak;
-}
 double frontLeftLoadRmsPercent(const scenario::RunResult& ref, const scenario::RunResult& run) {
   return rmsPercent(ref, run, [](const vehicle::VehicleSample& s) { return s.Fz[0]; });
 }
-// The work-precision measure (docs/RESULTS.md 5c): the larger RMS of yaw
-// rate and lateral acceleration, % of the reference's peaks.
-double yawAndLateralRmsPercent(const scenario::RunResult& ref, const scenario::RunResult& run) {
-  return std::max(rmsPercent(ref, run, [](const vehicle::VehicleSample& s) { return s.yawRate; }),
-                  rmsPercent(ref, run, [](const vehicle::VehicleSample& s) { return s.ay; }));
-}
-
 TEST(Envelope, CurbStrikeLoadAtTheDriversStepFollowsTheConvergedRun) {
   // The 10 ms step (BDF2, two Newton iterations) against 0.5 ms converged
   // (Newton to tolerance, a Jacobian every step): the front-left tyre's load

@@ -52,7 +52,8 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
     << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
     << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
     << ' ' << b.refineDepth << ' ' << b.keepFactorizations << ' '
-    << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm;
+    << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm << ' '
+    << scene.fidelity.newtonIterations;
   return k.str();
 }
 

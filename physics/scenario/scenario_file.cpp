@@ -356,6 +356,8 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     if (kform != "closed" && kform != "multibody")
       f->fail("unknown kinematic_equations '" + kform + "': expected closed or multibody", "kinematic_equations");
     s.fidelity.kinematicClosedForm = kform == "closed";
+    s.fidelity.newtonIterations =
+        static_cast<int>(f->integerIn("newton_iterations", 0, 50, s.fidelity.newtonIterations));  // 0: to tolerance
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

@@ -59,14 +59,18 @@ Simulation::Rung Simulation::makeRung(const vehicle::Vehicle& veh) {
   // derived model, the rack travel of each steered corner's table.
   for (int slot = 0; slot < veh.model.nDrivers; ++slot) r.dae->setDriverSignal(slot, &rack_);
   r.stepping = r.car ? static_cast<integ::Dae*>(r.car.get()) : r.dae.get();
-  r.integrator = makeIntegrator(*r.stepping);
+  r.integrator = makeIntegrator(*r.stepping, veh.fidelity != vehicle::Fidelity::Linkage);
   r.scratch = mb::makeData(veh.model);
   return r;
 }
 
-std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae) const {
+std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae, bool derived) const {
   const IntegratorSpec& is = spec().integrator;
-  if (is.method == IntegratorMethod::Bdf) return std::make_unique<integ::BdfIntegrator>(dae, is.bdf);
+  if (is.method == IntegratorMethod::Bdf) {
+    integ::BdfOptions o = is.bdf;
+    if (derived) o.newtonIterations = spec().fidelity.newtonIterations;  // FidelitySpec says why
+    return std::make_unique<integ::BdfIntegrator>(dae, o);
+  }
   integ::ExplicitOptions o = is.explicitMethod;
   o.method = is.method == IntegratorMethod::Rk4 ? integ::ExplicitMethod::RK4 : integ::ExplicitMethod::SemiImplicitEuler;
   return std::make_unique<integ::ExplicitIntegrator>(dae, o);
