@@ -97,6 +97,7 @@ void applyOverrides(const ScenarioOverrides& ov, scenario::ScenarioSpec& spec) {
   if (ov.asPublished) {  // the paper's fixed count on every rung
     bdf.refreshWhenNotContracting = false;
     spec.fidelity.newtonIterations = bdf.newtonIterations;
+    spec.fidelity.stopWithinTolerance = false;
   }
   if (scenario::stepsPerTick(spec.tick, it.step) == 0) {
     char text[256];

@@ -86,9 +86,9 @@ bench_table() {
     # scan of the road ahead and its switches.
     declare -A linkageIr
     for run in "paper linkage <=70000" "sedan linkage <=100000" "paper kinematic -" "sedan kinematic <=25000" \
-               "sedan kinematic -  fidelity.kinematic_equations=multibody" "sedan kinematic - fidelity.newton_iterations=2" \
+               "sedan kinematic -  fidelity.kinematic_equations=multibody" "sedan kinematic - fidelity.newton_stops_within_tolerance=false" \
                "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" \
-               "sedan planar - fidelity.newton_iterations=2" "sedan auto -"; do
+               "sedan planar - fidelity.newton_stops_within_tolerance=false" "sedan auto -"; do
       set -- $run
       v=$1 f=$2 target=$3 extra=()
       [ -n "${4:-}" ] && extra=(--set "$4")
@@ -107,7 +107,7 @@ bench_table() {
       [ "$f" != linkage ] && label="$v.toml, \`--fidelity $f\`"
       case "${4:-}" in
         *_equations=multibody) label="$label, the same equations in the multibody form (\`--set $4\`)" ;;
-        fidelity.newton_iterations=*) label="$label, the paper's fixed Newton count (\`--set $4\`; the rungs' default: to tolerance)" ;;
+        fidelity.newton_stops_within_tolerance=*) label="$label, the paper's two Newton iterations in full (\`--set $4\`; the rungs' default ends at the first within tolerance)" ;;
       esac
       perStep=$(( ($(ir 6) - $(ir 1)) / 500 ))
       [ "$f" = linkage ] && linkageIr[$v]=$perStep
@@ -186,7 +186,7 @@ bench_table() {
     }
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
     echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
-    echo "residual (about one per step: Newton to tolerance), the tyres, and the BDF step's own vector work and back-substitution,"
+    echo "residual (about one per step: Newton ends at the first iteration within tolerance), the tyres, and the BDF step's own vector work and back-substitution,"
     echo "which the rungs share: what is left to cut for the 6k target."
     echo
     profileTable planar
@@ -195,7 +195,7 @@ bench_table() {
     echo "physics/vehicle/kinematic_car.h; the same measure): the corners' tables (SplineGrid::eval: the"
     echo "steered corners' are bicubic in travel and rack, six pose components and the springs' lengths"
     echo "with their first and second derivatives), the corners' motion from them (cornerMotion) and the"
-    echo "residual's own algebra, for each of the step's residuals (about one: Newton to tolerance; a steered corner's table contracted along the rack once a step)."
+    echo "residual's own algebra, for each of the step's residuals (about one: Newton ends at the first iteration within tolerance; a steered corner's table contracted along the rack once a step)."
     echo
     profileTable kinematic
     echo

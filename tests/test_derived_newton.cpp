@@ -1,9 +1,11 @@
-// The derived rungs' Newton (FidelitySpec::newtonIterations): to tolerance
-// by default, where the linkage keeps the paper's fixed two. Their
-// equations are an ODE with a smooth residual: from the BDF predictor one
-// iteration is within tolerance at many steps (not all: it iterates where
-// the motion asks), and it may not cost accuracy: against the rung's own run
-// converged at 0.5 ms it is as close as the fixed two.
+// The derived rungs' Newton (FidelitySpec::newtonIterations,
+// stopWithinTolerance): at most the paper's two iterations a step, ending
+// at the first whose correction is within tolerance, where the linkage
+// takes its two in full. Their equations are an ODE with a smooth
+// residual: from the BDF predictor one iteration is within tolerance at
+// many steps. The early end must cost no accuracy (against the rung's own
+// run converged at 0.5 ms it is as close as the two in full) and save
+// iterations where the motion is smooth, and never add any where it is not.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -19,11 +21,9 @@ namespace {
 
 using testing_run_error::yawAndLateralRmsPercent;
 
-scenario::ScenarioSpec onRung(const char* file, vehicle::Fidelity rung, double step, int derivedNewton) {
+scenario::ScenarioSpec onRung(const char* file, vehicle::Fidelity rung) {
   scenario::ScenarioSpec s = scenario::loadScenarioFile(std::string(BDFCAR_SOURCE_DIR) + "/assets/scenarios/" + file);
   s.fidelity.suspension = rung;
-  s.fidelity.newtonIterations = derivedNewton;
-  s.integrator.step = step;
   return s;
 }
 
@@ -34,49 +34,57 @@ scenario::RunResult run(const scenario::ScenarioSpec& s) {
   return r;
 }
 
+double iterationsPerStep(const scenario::RunResult& r) {
+  return double(r.counters.newtonIterations) / double(r.counters.substeps);
+}
+
 struct Case {
   const char* file;
   vehicle::Fidelity rung;
-  double iterationsPerStep;  // the bound on to tolerance's mean
+  double iterationsPerStep;  // a bound on the early end's mean (whole run, settling included); 0: none
 };
 
 class DerivedNewton : public ::testing::TestWithParam<Case> {};
 
-TEST_P(DerivedNewton, ToToleranceIsAboutOneIterationAStepAndAsCloseToTheConvergedRun) {
+TEST_P(DerivedNewton, EndsWithinToleranceAsCloseToTheConvergedRunAndNeverDearer) {
   const Case c = GetParam();
-  const scenario::ScenarioSpec base = onRung(c.file, c.rung, 0.01, 0);
-  ASSERT_EQ(base.integrator.bdf.newtonIterations, 2) << "the scene's linkage count (the paper's)";
-  scenario::ScenarioSpec fineSpec = onRung(c.file, c.rung, 0.0005, 0);
+  const scenario::ScenarioSpec early = onRung(c.file, c.rung);
+  ASSERT_EQ(early.integrator.bdf.newtonIterations, 2) << "the scene's linkage count (the paper's)";
+  ASSERT_EQ(early.fidelity.newtonIterations, 2);
+  ASSERT_TRUE(early.fidelity.stopWithinTolerance);
+  scenario::ScenarioSpec fullSpec = early;
+  fullSpec.fidelity.stopWithinTolerance = false;
+  scenario::ScenarioSpec fineSpec = early;
+  fineSpec.integrator.step = 0.0005;
   fineSpec.integrator.bdf.jacobianEvery = 1;
-  const scenario::RunResult fine = run(fineSpec);
-  const scenario::RunResult tolerance = run(base);
-  const scenario::RunResult fixed = run(onRung(c.file, c.rung, 0.01, 2));
-  ASSERT_TRUE(fine.ok && tolerance.ok && fixed.ok);
-  // The fixed count takes its two iterations at every step; to tolerance
-  // as many as the motion asks (whole run, settling included: the J-turn's
-  // planar / kinematic 1.15 / 1.31, the sine with dwell's 1.70 / 1.90: its
-  // steering at 0.7 Hz moves the predictor off by more): well under two on
-  // the J-turn, and never a runaway.
-  const double perStep = double(tolerance.counters.newtonIterations) / double(tolerance.counters.substeps);
-  EXPECT_NEAR(double(fixed.counters.newtonIterations) / double(fixed.counters.substeps), 2.0, 0.05);
-  EXPECT_LT(perStep, c.iterationsPerStep);
-  std::printf("%s on %s: %.3f iterations a step; %.3f %% from the converged run (fixed two: %.3f %%)\n",
-              vehicle::fidelityName(c.rung), c.file, perStep, yawAndLateralRmsPercent(fine, tolerance),
-              yawAndLateralRmsPercent(fine, fixed));
-  // Against the converged run (measured: planar J-turn 0.54 / 0.54 %,
-  // kinematic J-turn 0.33 / 0.33 %, planar sine with dwell 0.12 / 0.20 %,
-  // kinematic 0.04 / 0.11 %: to tolerance / fixed two) within a tenth of a
-  // per cent of the fixed count's error.
-  const double eTolerance = yawAndLateralRmsPercent(fine, tolerance), eFixed = yawAndLateralRmsPercent(fine, fixed);
-  EXPECT_LT(eTolerance, eFixed + 0.1) << "fixed two " << eFixed << " %";
-  EXPECT_LT(eTolerance, 1.0);
+  fineSpec.fidelity.newtonIterations = 0;
+  const scenario::RunResult fine = run(fineSpec), stopped = run(early), full = run(fullSpec);
+  ASSERT_TRUE(fine.ok && stopped.ok && full.ok);
+  // Iterations a step (measured: J-turn planar / kinematic 1.14 / 1.30
+  // against 2.00 in full; sine with dwell 1.57 / 1.79 against 2.00; rough
+  // road, kinematic, 4.73 both: its steps are refined and rescued, and the
+  // early end does not come into it).
+  const double perStep = iterationsPerStep(stopped), perStepFull = iterationsPerStep(full);
+  EXPECT_GE(perStepFull, 2.0);
+  EXPECT_LE(perStep, perStepFull);
+  if (c.iterationsPerStep > 0) {
+    EXPECT_LT(perStep, c.iterationsPerStep);
+  }
+  // Against the converged run, within a tenth of a per cent of the count in
+  // full (measured: the same to the digits shown, e.g. J-turn planar
+  // 0.536 %, kinematic 0.326 %, sine with dwell 0.201 / 0.111 %).
+  const double eStopped = yawAndLateralRmsPercent(fine, stopped), eFull = yawAndLateralRmsPercent(fine, full);
+  EXPECT_LT(eStopped, eFull + 0.1);
+  std::printf("%s on %s: %.3f iterations a step (in full %.3f); %.3f %% from the converged run (in full %.3f %%)\n",
+              vehicle::fidelityName(c.rung), c.file, perStep, perStepFull, eStopped, eFull);
 }
 
 INSTANTIATE_TEST_SUITE_P(Rungs, DerivedNewton,
                          ::testing::Values(Case{"jturn.toml", vehicle::Fidelity::Planar, 1.5},
                                            Case{"jturn.toml", vehicle::Fidelity::Kinematic, 1.5},
-                                           Case{"hard/sine_with_dwell_80.toml", vehicle::Fidelity::Planar, 2.5},
-                                           Case{"hard/sine_with_dwell_80.toml", vehicle::Fidelity::Kinematic, 2.5}),
+                                           Case{"hard/sine_with_dwell_80.toml", vehicle::Fidelity::Planar, 2.0},
+                                           Case{"hard/sine_with_dwell_80.toml", vehicle::Fidelity::Kinematic, 2.0},
+                                           Case{"hard/rough_lane_change.toml", vehicle::Fidelity::Kinematic, 0}),
                          [](const auto& info) {
                            std::string name = std::string(vehicle::fidelityName(info.param.rung)) + "_" + info.param.file;
                            for (char& ch : name)

@@ -422,7 +422,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       return NewtonOutcome::Failed;
     }
     if (norm <= 1.0) {
-      if (toTolerance) return NewtonOutcome::Converged;
+      if (toTolerance || opt_.stopWithinTolerance) return NewtonOutcome::Converged;
     } else if (it > 1 && rep.contraction > (toTolerance ? 1.0 : opt_.contractionLimit)) {
       rep.message.set("Newton not contracting at t = %.6g s: correction %.3g -> %.3g (iteration %d)", t, prevNorm, norm,
                       it);

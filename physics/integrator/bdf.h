@@ -36,6 +36,10 @@ struct BdfOptions {
   int order = 2;                  // BDF order, 1..5
   int newtonIterations = 2;       // fixed count (the paper: 2); 0 = iterate to tolerance
   int maxNewtonIterations = 10;   // cap when iterating to tolerance
+  // A fixed count ends early at an iteration whose correction is within
+  // tolerance (the derived rungs: scenario FidelitySpec). Off: the count in
+  // full, as the paper (the linkage).
+  bool stopWithinTolerance = false;
   double atol = 1e-6;             // Newton tolerance on the correction, absolute (m, rad)
   double rtol = 1e-6;             // ... relative to the motion over the step
   int jacobianEvery = 200;        // evaluate the Jacobian every N steps; 0 = first step only

@@ -53,7 +53,7 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
     << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
     << ' ' << b.refineDepth << ' ' << b.keepFactorizations << ' '
     << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm << ' '
-    << scene.fidelity.newtonIterations;
+    << scene.fidelity.newtonIterations << ' ' << scene.fidelity.stopWithinTolerance;
   return k.str();
 }
 

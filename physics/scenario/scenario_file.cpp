@@ -358,6 +358,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     s.fidelity.kinematicClosedForm = kform == "closed";
     s.fidelity.newtonIterations =
         static_cast<int>(f->integerIn("newton_iterations", 0, 50, s.fidelity.newtonIterations));  // 0: to tolerance
+    s.fidelity.stopWithinTolerance = f->boolean("newton_stops_within_tolerance", s.fidelity.stopWithinTolerance);
     f->finish();
   }
   if (auto it = root.optionalTable("integrator")) {

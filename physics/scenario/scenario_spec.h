@@ -124,15 +124,17 @@ struct FidelitySpec {
   bool planarClosedForm = true;
   // The kinematic rung's, likewise (vehicle/kinematic_car.h).
   bool kinematicClosedForm = true;
-  // Newton iterations per step on the derived rungs (kinematic, planar;
-  // integrator.newton_iterations is the linkage's): 0 = to tolerance. Their
-  // equations are an ODE (no constraint to restore) with a smooth residual,
-  // so from the BDF predictor one iteration is within tolerance at many
-  // steps: to tolerance costs fewer residuals than the paper's fixed two
-  // where the motion is smooth (the J-turn: 1.15 a step on the planar rung),
-  // about as many where it is not (a sine with dwell: 1.7), and is as close
-  // to the rung's converged run (RESULTS 6b, tests/test_derived_newton.cpp).
-  int newtonIterations = 0;
+  // Newton on the derived rungs (kinematic, planar; integrator.newton_iterations
+  // is the linkage's): at most newtonIterations a step (0 = to tolerance),
+  // ending early at an iteration whose correction is within tolerance
+  // (stopWithinTolerance). Their equations are an ODE (no constraint to
+  // restore) with a smooth residual, so from the BDF predictor one iteration
+  // is within tolerance at many steps: where the motion is smooth a step
+  // costs one residual instead of the fixed count's two (the J-turn), where
+  // it is not (a rough road) no more than two, and the early end loses no
+  // accuracy against the count in full (RESULTS 6b, tests/test_derived_newton.cpp).
+  int newtonIterations = 2;
+  bool stopWithinTolerance = true;
 };
 
 // The default error budget of `auto` (fidelity.error_budget): each derived

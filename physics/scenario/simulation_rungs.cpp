@@ -68,7 +68,10 @@ std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae, b
   const IntegratorSpec& is = spec().integrator;
   if (is.method == IntegratorMethod::Bdf) {
     integ::BdfOptions o = is.bdf;
-    if (derived) o.newtonIterations = spec().fidelity.newtonIterations;  // FidelitySpec says why
+    if (derived) {  // FidelitySpec says why
+      o.newtonIterations = spec().fidelity.newtonIterations;
+      o.stopWithinTolerance = spec().fidelity.stopWithinTolerance;
+    }
     return std::make_unique<integ::BdfIntegrator>(dae, o);
   }
   integ::ExplicitOptions o = is.explicitMethod;
