@@ -161,11 +161,8 @@ void jointRetract(JointType type, const double* q, const double* dq, double* out
       break;
     }
     case JointType::Planar: {
-      // As the free joint: the translation increment is in the child frame.
       const auto [s, c] = pm::sincos(q[2]);
-      out[0] = q[0] + c * dq[0] - s * dq[1];
-      out[1] = q[1] + s * dq[0] + c * dq[1];
-      out[2] = q[2] + dq[2];
+      planarRetract(q, dq, s, c, out);
       break;
     }
   }
@@ -202,13 +199,24 @@ void jointLocal(JointType type, const double* base, const double* q, double* out
     }
     case JointType::Planar: {
       const auto [s, c] = pm::sincos(base[2]);
-      const double dx = q[0] - base[0], dy = q[1] - base[1];
-      out[0] = c * dx + s * dy;
-      out[1] = -s * dx + c * dy;
-      out[2] = q[2] - base[2];
+      planarLocal(base, q, s, c, out);
       break;
     }
   }
+}
+
+void planarRetract(const double* q, const double* dq, double s, double c, double* out) {
+  // As the free joint: the translation increment is in the child frame.
+  out[0] = q[0] + c * dq[0] - s * dq[1];
+  out[1] = q[1] + s * dq[0] + c * dq[1];
+  out[2] = q[2] + dq[2];
+}
+
+void planarLocal(const double* base, const double* q, double s, double c, double* out) {
+  const double dx = q[0] - base[0], dy = q[1] - base[1];
+  out[0] = c * dx + s * dy;
+  out[1] = -s * dx + c * dy;
+  out[2] = q[2] - base[2];
 }
 
 void jointLocalRate(JointType type, const double* delta, const double* v, double* out) {

@@ -28,6 +28,11 @@ Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v);
 void jointRetract(JointType type, const double* q, const double* dq, double* out);
 // Local coordinates of q around base: base (+) out = q.
 void jointLocal(JointType type, const double* base, const double* q, double* out);
+// The planar joint's two above with the sine and cosine of the base's
+// heading (q[2], base[2]) given: a caller that moves many increments around
+// one base computes them once.
+void planarRetract(const double* q, const double* dq, double s, double c, double* out);
+void planarLocal(const double* base, const double* q, double s, double c, double* out);
 // Time derivative of the local coordinates delta given the joint velocity v.
 void jointLocalRate(JointType type, const double* delta, const double* v, double* out);
 

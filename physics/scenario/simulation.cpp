@@ -338,7 +338,7 @@ integ::StepReport Simulation::step() {
     state_.input.brake = brake_->at(t).value;
     if (rack_.segment.scripted) state_.input.steer = steering_->at(t + h).value;
   }
-  applyDrive(state_.input, chassisState().vx, h);
+  applyDrive(state_.input, forwardSpeed(), h);
   state_.input.shift = 0;  // a gear request acts once, at the tick's first step
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;

@@ -253,6 +253,8 @@ class Simulation {
     double yaw = 0, vx = 0, vy = 0, yawRate = 0;  // vx, vy: the centre of mass's, chassis axes
   };
   ChassisState chassisState() const;
+  // Its vx alone (what the speed hold reads at every step): no attitude, no trigonometry.
+  double forwardSpeed() const;
   // derived: a derived rung's (its own Newton count: FidelitySpec::newtonIterations).
   std::unique_ptr<integ::Integrator> makeIntegrator(integ::Dae& dae, bool derived) const;
   void applyDrive(const DriverInput& in, double vx, double h);

@@ -102,13 +102,13 @@ Simulation::ChassisState Simulation::chassisState() const {
     const mb::Body& b = vehicle().model.bodies[vehicle().layout.base];
     const double* qb = p.q.data() + (car_ ? 0 : b.qIndex);
     const int bv = car_ ? 0 : b.vIndex;
-    const double u = p.v(bv), w = p.v(bv + 1), r = p.v(bv + 2);
+    const double w = p.v(bv + 1), r = p.v(bv + 2);
     const Eigen::Vector3d c = vehicle().planar->comInBase;
     const double cy = pm::cos(qb[2]), sy = pm::sin(qb[2]);
     ChassisState s;
     s.com = Eigen::Vector3d(qb[0] + cy * c.x() - sy * c.y(), qb[1] + sy * c.x() + cy * c.y(), c.z());
     s.yaw = qb[2];
-    s.vx = u - r * c.y();
+    s.vx = forwardSpeed();
     s.vy = w + r * c.x();
     s.yawRate = r;
     return s;
@@ -121,11 +121,22 @@ Simulation::ChassisState Simulation::chassisState() const {
   ChassisState s;
   s.com = Eigen::Vector3d(qc[0], qc[1], qc[2]) + R * ch.com;
   s.yaw = pm::atan2(R(1, 0), R(0, 0));
-  const Eigen::Vector3d vCom = vb + wb.cross(ch.com);
-  s.vx = vCom.x();
-  s.vy = vCom.y();
+  s.vx = forwardSpeed();
+  s.vy = (vb + wb.cross(ch.com)).y();
   s.yawRate = wb.z();
   return s;
+}
+
+double Simulation::forwardSpeed() const {
+  const integ::SolutionPoint& p = integrator_->current();
+  if (vehicle().planar) {
+    const int bv = car_ ? 0 : vehicle().model.bodies[vehicle().layout.base].vIndex;
+    return p.v(bv) - p.v(bv + 2) * vehicle().planar->comInBase.y();
+  }
+  const mb::Body& ch = vehicle().model.bodies[vehicle().layout.chassis];
+  const int cv = car_ ? 0 : ch.vIndex;
+  const Eigen::Vector3d vb = p.v.segment<3>(cv), wb = p.v.segment<3>(cv + 3);
+  return (vb + wb.cross(ch.com)).x();
 }
 
 void Simulation::steerToward(double command) {

@@ -1,6 +1,8 @@
 #include "vehicle/closed_form_car.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "multibody/joint.h"
 #include "multibody/model_error.h"
@@ -36,13 +38,33 @@ ClosedFormCar::SpinJoint ClosedFormCar::spinJoint(const mb::Body& b, const std::
   return out;
 }
 
+const pm::SinCos& ClosedFormCar::baseHeading(double yaw) const {
+  const auto bits = std::bit_cast<std::uint64_t>(yaw);
+  if (!headingKnown_ || bits != headingAngleBits_) {
+    heading_ = pm::sincos(yaw);
+    headingAngleBits_ = bits;
+    headingKnown_ = true;
+  }
+  return heading_;
+}
+
 void ClosedFormCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const {
-  mb::jointRetract(chassisJoint_, q.data(), dq.data(), out.data());
+  if (chassisJoint_ == mb::JointType::Planar) {
+    const pm::SinCos& r = baseHeading(q(2));
+    mb::planarRetract(q.data(), dq.data(), r.s, r.c, out.data());
+  } else {
+    mb::jointRetract(chassisJoint_, q.data(), dq.data(), out.data());
+  }
   out.tail(nq_ - chassisQ_) = q.tail(nq_ - chassisQ_) + dq.tail(n_ - chassisV_);
 }
 
 void ClosedFormCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
-  mb::jointLocal(chassisJoint_, base.data(), q.data(), out.data());
+  if (chassisJoint_ == mb::JointType::Planar) {
+    const pm::SinCos& r = baseHeading(base(2));
+    mb::planarLocal(base.data(), q.data(), r.s, r.c, out.data());
+  } else {
+    mb::jointLocal(chassisJoint_, base.data(), q.data(), out.data());
+  }
   out.tail(n_ - chassisV_) = q.tail(nq_ - chassisQ_) - base.tail(nq_ - chassisQ_);
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "integrator/step_types.h"
 #include "multibody/multibody_dae.h"
 #include "multibody/time_signal.h"
+#include "portable_math.h"
 #include "terrain/terrain.h"
 #include "vehicle/vehicle_builder.h"
 #include "vehicle/vehicle_forces.h"
@@ -115,6 +117,15 @@ class ClosedFormCar : public integ::Dae {
   // their carriers (what the step's acceptance advances the force laws with).
   std::array<tyre::WheelKinematics, 4> kinematics_;
   std::array<double, 4> relativeSpin_{};
+
+ private:
+  // The sine and cosine of a planar base's heading at the last base angle
+  // seen (its bits): every retraction and local coordinate of a step is
+  // taken around the same node, so one sincos serves the step's five or so.
+  const pm::SinCos& baseHeading(double yaw) const;
+  mutable bool headingKnown_ = false;
+  mutable std::uint64_t headingAngleBits_ = 0;
+  mutable pm::SinCos heading_{};
 };
 
 }  // namespace bdfcar::vehicle
