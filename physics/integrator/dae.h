@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace bdfcar::integ {
@@ -23,13 +24,28 @@ struct DaeSizes {
 enum class EvalStatus { Ok, Recoverable, Fatal };
 
 // A short reason attached to a non-Ok status (no allocation on the step path).
-struct Message {
-  std::array<char, 200> text{};
+// A C string in a fixed buffer (no allocation on the step). Only the string
+// is set and copied, not the buffer's 200 bytes: a step makes and returns a
+// few reports whose messages are mostly empty.
+class Message {
+ public:
+  Message() { text_[0] = '\0'; }
+  Message(const Message& o) { copyFrom(o); }
+  Message& operator=(const Message& o) {
+    copyFrom(o);
+    return *this;
+  }
   template <typename... Args>
   void set(const char* fmt, Args... args) {
-    std::snprintf(text.data(), text.size(), fmt, args...);
+    std::snprintf(text_.data(), text_.size(), fmt, args...);
   }
-  const char* c_str() const { return text.data(); }
+  const char* c_str() const { return text_.data(); }
+
+ private:
+  void copyFrom(const Message& o) {
+    if (&o != this) std::memcpy(text_.data(), o.text_.data(), std::strlen(o.text_.data()) + 1);
+  }
+  std::array<char, 200> text_;  // bytes past the string's end are unspecified
 };
 
 // Residuals of the over-determined DAE at one point.
