@@ -23,10 +23,10 @@ struct DaeSizes {
 
 enum class EvalStatus { Ok, Recoverable, Fatal };
 
-// A short reason attached to a non-Ok status (no allocation on the step path).
-// A C string in a fixed buffer (no allocation on the step). Only the string
-// is set and copied, not the buffer's 200 bytes: a step makes and returns a
-// few reports whose messages are mostly empty.
+// A short reason attached to a non-Ok status: a C string in a fixed buffer
+// (no allocation on the step path). Only the string is set and copied, not
+// the buffer's 200 bytes: a step makes and returns a few reports whose
+// messages are mostly empty.
 class Message {
  public:
   Message() { text_[0] = '\0'; }

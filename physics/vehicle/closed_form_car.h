@@ -122,6 +122,8 @@ class ClosedFormCar : public integ::Dae {
   // The sine and cosine of a planar base's heading at the last base angle
   // seen (its bits): every retraction and local coordinate of a step is
   // taken around the same node, so one sincos serves the step's five or so.
+  // A cache in const methods, as KinematicCar's rows: a car belongs to one
+  // simulation, stepped by one thread.
   const pm::SinCos& baseHeading(double yaw) const;
   mutable bool headingKnown_ = false;
   mutable std::uint64_t headingAngleBits_ = 0;
