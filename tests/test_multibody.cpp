@@ -151,7 +151,7 @@ TEST(Multibody, VelocityAndAccelerationConstraintsAreTimeDerivatives) {
     const double e = 1e-5;
     at = (vel(t + e) - vel(t - e)) / (2 * e);
     mb::updatePositions(m, qt, d);
-    mb::updateVelocities(m, qt, vt, d);
+    mb::updateVelocities(m, vt, d);
     mb::updateAccelerations(m, at, d);
     mb::constraintResiduals(m, qt, vt, at, d);
     phi = d.phi;

@@ -55,7 +55,7 @@ TEST(PlanarJoint, MovesAndLoadsAsAFreeJointHeldInThePlane) {
   Data dp = makeData(planar), df = makeData(free);
   for (auto [m, d, q, v, a] : {std::tie(planar, dp, qp, vp, ap), std::tie(free, df, qf, vf, af)}) {
     updatePositions(m, q, d);
-    updateVelocities(m, q, v, d);
+    updateVelocities(m, v, d);
     updateAccelerations(m, a, d);
     clearForces(m, d);
     applyGravity(m, d);

@@ -10,6 +10,7 @@ Data makeData(const Model& model) {
   d.R.assign(nb, Mat3::Identity());
   d.p.assign(nb, Vec3::Zero());
   d.S = model.S;
+  d.secondAngleSinCos.assign(nb, std::array<double, 2>{});
   d.tableSamples.assign(model.tables.size(), SplineGrid::Sample{});
   d.tableSubspaceDerivatives.assign(model.tables.size(), std::array<Vec6, 4>{});
   d.tableRates.assign(model.tables.size(), std::array<double, 2>{});

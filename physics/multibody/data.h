@@ -20,6 +20,9 @@ struct Data {
   std::vector<Mat3> R;            // (nbody) body axes in world
   std::vector<Vec3> p;            // (nbody) body origin in world
   Eigen::Matrix<double, 6, Eigen::Dynamic> S;  // (6 x nv) joint motion subspaces, body coordinates
+  // (nbody) sine and cosine of a universal joint's second angle, on which its
+  // subspace and its rate bias depend (taken once per evaluation).
+  std::vector<std::array<double, 2>> secondAngleSinCos;
 
   // Tabulated joints (one entry per Model::tables): the table at the joint
   // coordinates, and d S_k / d c_l of the subspace columns (index 2 k + l).

@@ -123,18 +123,6 @@ void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj) {
   }
 }
 
-Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v) {
-  Vec6 c = Vec6::Zero();
-  if (type == JointType::Universal) {
-    // d/dt of the first column (cos b, 0, sin b) times alpha_dot.
-    const double ab = v[0] * v[1];
-    const pm::SinCos r = pm::sincos(q[1]);
-    c(3) = -r.s * ab;
-    c(5) = r.c * ab;
-  }
-  return c;
-}
-
 void jointRetract(JointType type, const double* q, const double* dq, double* out) {
   switch (type) {
     case JointType::Revolute:

@@ -20,10 +20,6 @@ void jointRelativePose(JointType type, const double* q, Mat3& Rj, Vec3& dj);
 // Motion subspace (lin; ang) of the joint in the child joint frame (6 x nv).
 void jointSubspace(JointType type, const double* q, SubspaceBlock& Sj);
 
-// Apparent time derivative of the subspace times the joint velocity, in the
-// child joint frame (nonzero only for the universal joint).
-Vec6 jointSubspaceRateBias(JointType type, const double* q, const double* v);
-
 // q (+) dq: move the coordinates by a tangent increment dq (size nv).
 void jointRetract(JointType type, const double* q, const double* dq, double* out);
 // Local coordinates of q around base: base (+) out = q.

@@ -109,10 +109,17 @@ void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
         t += b.axisInParent * qi[1];
         break;
       case JointType::Universal: {
-        R = throughJointFrames(b, rotX(qi[0]) * rotY(qi[1]));
-        SubspaceBlock Sj;
-        jointSubspace(b.joint, qi, Sj);
-        d.S.col(b.vIndex) = jointToBody(b, Sj.col(0));
+        // rotX(alpha) rotY(beta) written out, and the subspace's first
+        // column (cos beta, 0, sin beta) about the joint frame's axes.
+        const auto [sa, ca] = pm::sincos(qi[0]);
+        const auto [sb, cb] = pm::sincos(qi[1]);
+        Mat3 Rj;
+        Rj << cb, 0, sb, sa * sb, ca, -sa * cb, -ca * sb, sa, ca * cb;
+        R = throughJointFrames(b, Rj);
+        d.secondAngleSinCos[i] = {sb, cb};
+        Vec6 s0;
+        s0 << 0, 0, 0, cb, 0, sb;
+        d.S.col(b.vIndex) = jointToBody(b, s0);
         break;
       }
       case JointType::Spherical: R = throughJointFrames(b, quatToMatrix(qi)); break;
@@ -142,7 +149,7 @@ void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& d) {
   }
 }
 
-void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Data& d) {
+void updateVelocities(const Model& model, const Eigen::VectorXd& v, Data& d) {
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const Body& b = model.bodies[i];
     const Vec6 vJ = subspaceTimes(d, b, v);
@@ -151,8 +158,15 @@ void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen:
     else
       d.vel[i] = d.Xup[i].applyMotion(d.vel[b.parent]) + vJ;
     d.bias[i] = crossMotion(d.vel[i], vJ);
-    if (b.joint == JointType::Universal)
-      d.bias[i] += jointToBody(b, jointSubspaceRateBias(b.joint, q.data() + b.qIndex, v.data() + b.vIndex));
+    if (b.joint == JointType::Universal) {
+      // d/dt of the first column (cos beta, 0, sin beta) times alpha_dot,
+      // from the sine and cosine updatePositions took.
+      const auto [sb, cb] = d.secondAngleSinCos[i];
+      const double ab = v(b.vIndex) * v(b.vIndex + 1);
+      Vec6 c;
+      c << 0, 0, 0, -sb * ab, 0, cb * ab;
+      d.bias[i] += jointToBody(b, c);
+    }
     if (isTabulated(b)) {
       // Apparent rate of the subspace: sum over k, l of dS_k/dc_l c_dot_l c_dot_k.
       const auto& dS = d.tableSubspaceDerivatives[b.table];

@@ -10,8 +10,9 @@ namespace bdfcar::mb {
 
 // Xup, world poses R/p and motion subspaces S for positions q (nq).
 void updatePositions(const Model& model, const Eigen::VectorXd& q, Data& data);
-// Spatial velocities and velocity-product accelerations for velocities v (nv).
-void updateVelocities(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Data& data);
+// Spatial velocities and velocity-product accelerations for velocities v (nv);
+// needs updatePositions (the subspaces and the joint angles' sines and cosines).
+void updateVelocities(const Model& model, const Eigen::VectorXd& v, Data& data);
 // Spatial accelerations for joint accelerations a (nv); needs updateVelocities.
 void updateAccelerations(const Model& model, const Eigen::VectorXd& a, Data& data);
 

@@ -36,7 +36,7 @@ void MultibodyDae::applyForces(double t) {
 void MultibodyDae::evaluateKinematics(double t, const integ::Vec& q, const integ::Vec& v) {
   sampleDrivers(model_, data_, t);
   updatePositions(model_, q, data_);
-  updateVelocities(model_, q, v, data_);
+  updateVelocities(model_, v, data_);
   updateAccelerations(model_, zeroV_, data_);
   applyForces(t);
 }
@@ -80,7 +80,7 @@ integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const in
                                          integ::Message& msg) {
   sampleDrivers(model_, data_, t);
   updatePositions(model_, q, data_);
-  updateVelocities(model_, q, v, data_);
+  updateVelocities(model_, v, data_);
   updateAccelerations(model_, a, data_);
   applyForces(t);
   applyConstraintWrenches(model_, lambda, data_);

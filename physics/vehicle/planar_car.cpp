@@ -126,7 +126,7 @@ PlanarCar::PlanarCar(const Vehicle& planar, const terrain::Terrain& terrain, con
     for (int j = 0; j < rack.nodes; ++j) {
       setRackTravel(planar, q, rack.start + j * rack.step);
       mb::updatePositions(m, q, d);
-      mb::updateVelocities(m, q, rate, d);
+      mb::updateVelocities(m, rate, d);
       double Sx = 0, Sy = 0, J = 0, H = 0;
       for (int i : steered) {
         const mb::Body& b = m.bodies[i];

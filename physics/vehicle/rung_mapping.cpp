@@ -52,7 +52,7 @@ void kinematicToPlanar(const Vehicle& kin, const Vehicle& planar, const VectorXd
                        VectorXd& qp, VectorXd& vp) {
   mb::Data d = mb::makeData(kin.model);
   mb::updatePositions(kin.model, qk, d);
-  mb::updateVelocities(kin.model, qk, vk, d);
+  mb::updateVelocities(kin.model, vk, d);
   const int ch = kin.layout.chassis;
   const Mat3 Rc = d.R[ch];
   const mb::Body& sprung = planar.model.bodies[planar.layout.chassis];
@@ -94,7 +94,7 @@ void planarToKinematic(const Vehicle& planar, const Vehicle& kin, const VectorXd
                        VectorXd& qk, VectorXd& vk) {
   mb::Data d = mb::makeData(planar.model);
   mb::updatePositions(planar.model, qp, d);
-  mb::updateVelocities(planar.model, qp, vp, d);
+  mb::updateVelocities(planar.model, vp, d);
   const PlanarLoads& P = *planar.planar;
   const int sprung = planar.layout.chassis, base = planar.layout.base;
   const mb::Body& ch = kin.model.bodies[kin.layout.chassis];

@@ -17,7 +17,7 @@ VehicleSample sampleVehicle(const Vehicle& v, mb::MultibodyDae& dae, VehicleForc
   if (!evaluated) {
     mb::sampleDrivers(m, d, s.t);
     mb::updatePositions(m, s.q, d);
-    mb::updateVelocities(m, s.q, s.v, d);
+    mb::updateVelocities(m, s.v, d);
     mb::updateAccelerations(m, s.a, d);
     mb::clearForces(m, d);
     d.jointForce.setZero();
