@@ -42,7 +42,7 @@ void referenceSection(std::ostream& md, const ReportArgs& a, const fs::path& ima
   const std::vector<Case> cases = {
       {"sedan.toml, 1 ms, Jacobian and residual every step (Newton to tolerance)",
        withIntegrator(sedan, IntegratorMethod::Bdf, 0.001, 2, 0, 1)},
-      {"sedan.toml, 10 ms, 2 Newton iterations, Jacobian every 200 steps (the paper's setting)",
+      {"sedan.toml, 10 ms, at most 2 Newton iterations, Jacobian every 200 steps (the paper's setting)",
        withIntegrator(sedan, IntegratorMethod::Bdf, 0.01, 2, 2, 200)},
       {"paper.toml, 1 ms, Jacobian and residual every step",
        withIntegrator(scenarioWith("jturn.toml", "paper.toml"), IntegratorMethod::Bdf, 0.001, 2, 0, 1)},
@@ -171,7 +171,7 @@ void explicitSection(std::ostream& md, const ReportArgs& a) {
   md << "## 4. Implicit against explicit on the same model\n\n"
      << "sedan.toml J-turn (with settling). RK4 and semi-implicit Euler integrate the index-1 form with "
      << "Baumgarte feedback and a projection onto the position and velocity constraints after each step; BDF2 "
-     << "uses the paper's setting (2 Newton iterations, Jacobian every 200 steps). "
+     << "uses the paper's setting (at most 2 Newton iterations, Jacobian every 200 steps). "
      << "RMS yaw-rate difference to the reference (% of peak), or where it diverged:\n\n"
      << "| h | BDF2 (paper's setting) | RK4 | semi-implicit Euler |\n|---|---|---|---|\n";
   const std::vector<double> refYaw = csvColumn(a.reference, "yawrate_radps"), refT = csvColumn(a.reference, "time_s");
@@ -232,7 +232,7 @@ void speedSection(std::ostream& md, const ReportArgs& a) {
   md << "\nThe split covers the whole run including settling (the Jacobian every 200 steps, amortised). Timings "
      << "on a shared 2-core VM: ratios are steadier than absolute figures. `bdfcar run` prints the same "
      << "figure (us per step) for any scenario; `bench_vehicle` (section 6) measures it with Google Benchmark.\n\n"
-     << "Speed against error, sedan.toml J-turn, 2 Newton iterations, Jacobian every 200 steps; RMS yaw-rate "
+     << "Speed against error, sedan.toml J-turn, at most 2 Newton iterations, Jacobian every 200 steps; RMS yaw-rate "
      << "difference to the reference and wall time per simulated second (median of " << a.repeats << "):\n\n"
      << "| h | BDF1 | BDF2 | BDF3 |\n|---|---|---|---|\n";
   const std::vector<double> refYaw = csvColumn(a.reference, "yawrate_radps"), refT = csvColumn(a.reference, "time_s");

@@ -92,7 +92,7 @@ void autoAgainstTheLinkage(std::ostream& md) {
 }
 
 // Each shipped vehicle's certificate at the scenes' default step (10 ms,
-// BDF2, the paper's 2 Newton iterations; on the rungs ending early within tolerance), and what `auto` takes from it.
+// BDF2, the paper's 2 Newton iterations at most, ending early within tolerance), and what `auto` takes from it.
 void certificateTables(std::ostream& md) {
   md << "\n### Certificates of the derived rungs, per shipped vehicle\n\n"
      << "Each derived rung against the linkage it comes from, at a 10 ms step, on the battery of "
@@ -150,8 +150,8 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "the wheels leaves the road plane, a tyre nears its limit or the lateral acceleration leaves the planar "
      << "rung's certified range, and back after a calm second (scenario/fidelity_policy.h); the label gives its "
      << "share of steps on the planar model and its switches.\n\n"
-     << "Each rung at 10 ms with the default policy (Jacobian every 200 steps; the linkage 2 Newton iterations, "
-     << "the derived rungs at most 2, ending at the first within tolerance: fidelity.newton_iterations), and the "
+     << "Each rung at 10 ms with the default policy (Jacobian every 200 steps; at most 2 Newton iterations on "
+     << "every rung, ending at the first within tolerance: fidelity.newton_stops_within_tolerance), and the "
      << "kinematic rung converged (1 ms, Newton to tolerance, Jacobian every step: its modelling error alone), "
      << "against the linkage converged at 1 ms; sedan.toml. Wall time per manoeuvre step, no telemetry (median of " << repeats
      << "); RMS differences of yaw rate and lateral acceleration (as % of the linkage's peak on the manoeuvres "

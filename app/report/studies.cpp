@@ -105,6 +105,9 @@ scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::Integr
   s.integrator.bdf.newtonIterations = newton;
   s.integrator.bdf.jacobianEvery = jacobianEvery;
   s.integrator.bdf.refreshWhenNotContracting = refresh;
+  // The method as published (no refresh) takes its count in full; bdfcar's
+  // policy ends a step's count at the first iteration within tolerance.
+  s.fidelity.stopWithinTolerance = refresh;
   return s;
 }
 

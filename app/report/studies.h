@@ -38,6 +38,9 @@ struct RunSummary {
 // kept).
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats);
 
+// refresh: bdfcar's Newton policy (a refresh when Newton stops contracting,
+// a step's count ended at the first iteration within tolerance); false: the
+// paper's method as published (the count in full, nothing else).
 scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,
                                       int newton, int jacobianEvery, bool refresh = true);
 

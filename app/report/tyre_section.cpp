@@ -58,7 +58,7 @@ void tyreSection(std::ostream& md, const std::string& pac02Reference) {
      << "0.1 m/s and the MF rolling radius.\n\n";
   command(md, "assets/scenarios/jturn.toml --vehicle assets/vehicles/sedan_pac2002_chrono9.toml --step 0.01");
 
-  md << "Each evaluation at the paper's setting (10 ms, 2 Newton iterations, Jacobian every 200 steps) against its own "
+  md << "Each evaluation at the paper's setting (10 ms, at most 2 Newton iterations, Jacobian every 200 steps) against its own "
      << "converged run (1 ms, Newton to tolerance), and the Fiala sedan for comparison; peak yaw rate and a_y of the "
      << "converged run:\n\n"
      << "| vehicle | manoeuvre | yaw rate | a_y | peak yaw rate (rad/s) | peak a_y (m/s^2) |\n|---|---|---|---|---|---|\n";

@@ -130,7 +130,7 @@ void workPrecisionSection(std::ostream& md, const std::string& imageDir) {
      << "the Jacobian at every step; the larger of the two, as % of the converged run's peak), sedan.toml; "
      << "the curb and the rough road also on enveloping tyres (sedan_envelope.toml: physics/tyre/envelope.h, the "
      << "converged run on them too). "
-     << "BDF orders 1-3 at 5, 10, 20 and 40 ms with the default policy (2 Newton iterations, Jacobian every "
+     << "BDF orders 1-3 at 5, 10, 20 and 40 ms with the default policy (at most 2 Newton iterations, Jacobian every "
      << "200 steps); at 10 ms BDF2 with Newton 1, 3 and to tolerance and the Jacobian every step or every 20; RK4 "
      << "and semi-implicit Euler at 1, 2, 5 and 10 ms. A diverged run is drawn at the top of its panel "
      << "(crosses) and listed below, not dropped.\n\n";

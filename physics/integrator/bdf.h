@@ -37,8 +37,8 @@ struct BdfOptions {
   int newtonIterations = 2;       // fixed count (the paper: 2); 0 = iterate to tolerance
   int maxNewtonIterations = 10;   // cap when iterating to tolerance
   // A fixed count ends early at an iteration whose correction is within
-  // tolerance (the derived rungs: scenario FidelitySpec). Off: the count in
-  // full, as the paper (the linkage).
+  // tolerance (bdfcar's scenes, every rung: scenario FidelitySpec). Off: the
+  // count in full, as the paper.
   bool stopWithinTolerance = false;
   double atol = 1e-6;             // Newton tolerance on the correction, absolute (m, rad)
   double rtol = 1e-6;             // ... relative to the motion over the step
@@ -95,6 +95,7 @@ class BdfIntegrator final : public Integrator {
   void bindState(IntegratorState& s) override;
   const IntegratorState& state() const override { return *st_; }
   void markJacobianStale() override { haveBlocks_ = false; }
+  void setNewtonEarlyEnd(bool on) override { opt_.stopWithinTolerance = on; }
   const BdfOptions& options() const { return opt_; }
 
  private:

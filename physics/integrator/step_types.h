@@ -133,6 +133,9 @@ class Integrator {
   // The next step evaluates a fresh Jacobian (a snapshot boundary: the run
   // that goes on and a run restored to the snapshot then step alike).
   virtual void markJacobianStale() {}
+  // An implicit method's fixed Newton count ends early at an iteration within
+  // tolerance (BdfOptions::stopWithinTolerance), from the next step on.
+  virtual void setNewtonEarlyEnd(bool /*on*/) {}
 };
 
 }  // namespace bdfcar::integ

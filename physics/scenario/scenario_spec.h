@@ -125,15 +125,19 @@ struct FidelitySpec {
   // The kinematic rung's, likewise (vehicle/kinematic_car.h).
   bool kinematicClosedForm = true;
   // Newton on the derived rungs (kinematic, planar; integrator.newton_iterations
-  // is the linkage's): at most newtonIterations a step (0 = to tolerance),
-  // ending early at an iteration whose correction is within tolerance
-  // (stopWithinTolerance). Their equations are an ODE (no constraint to
-  // restore) with a smooth residual, so from the BDF predictor one iteration
-  // is within tolerance at many steps: where the motion is smooth a step
-  // costs one residual instead of the fixed count's two (the J-turn), where
-  // it is not (a rough road) no more than two, and the early end loses no
-  // accuracy against the count in full (RESULTS 6b, tests/test_derived_newton.cpp).
+  // is the linkage's): at most newtonIterations a step (0 = to tolerance).
   int newtonIterations = 2;
+  // On every rung, the linkage included: a step's fixed count ends early at
+  // an iteration whose correction is within tolerance (the next would move
+  // the state by less than the tolerance). From the BDF predictor one
+  // iteration is within tolerance at many steps: where the motion is smooth
+  // a step costs one residual instead of the count's two (the J-turn: the
+  // linkage 1.3 a step, the planar rung 1.1), where it is not (a rough road,
+  // a curb) no more than the count, and the early end loses no accuracy
+  // against the count in full (RESULTS 6b, tests/test_newton_early_end.cpp).
+  // Not in the tyres' low-speed range (Simulation::step): there the count in
+  // full lets a stopped car settle. Off: the count in full, as the paper
+  // (and --as-published).
   bool stopWithinTolerance = true;
 };
 

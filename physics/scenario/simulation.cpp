@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <Eigen/Geometry>
 #include <stdexcept>
+#include <variant>
 
 #include "multibody/kinematics.h"
 #include "scenario/course_line.h"
@@ -58,6 +59,15 @@ double driveLimit(const vehicle::Vehicle& v) {
     return peak * p.gearbox.overall(1) / std::max(1, driven);
   }
   return v.spec.maxDriveTorque > 0 ? v.spec.maxDriveTorque : std::numeric_limits<double>::infinity();
+}
+
+// The forward speed below which some tyre of the car blends in its transient
+// (low-speed) slips (tyre/low_speed_slips.h).
+double lowSpeedRange(const vehicle::VehicleSpec& v) {
+  double range = 0;
+  for (const vehicle::WheelSpec& w : v.wheels)
+    range = std::max(range, std::visit([](const auto& p) { return p.lowSpeed.blend1; }, w.tyre));
+  return range;
 }
 
 }  // namespace
@@ -338,8 +348,14 @@ integ::StepReport Simulation::step() {
     state_.input.brake = brake_->at(t).value;
     if (rack_.segment.scripted) state_.input.steer = steering_->at(t + h).value;
   }
-  applyDrive(state_.input, forwardSpeed(), h);
+  const double speed = forwardSpeed();
+  applyDrive(state_.input, speed, h);
   state_.input.shift = 0;  // a gear request acts once, at the tick's first step
+  // Newton's early end (FidelitySpec) above the tyres' low-speed range only:
+  // below it their transient slips make each contact a stiff, lightly damped
+  // spring, on which the sub-tolerance error one iteration leaves would keep
+  // a stopped car trembling (at micrometres a second) instead of settling.
+  integrator_->setNewtonEarlyEnd(spec().fidelity.stopWithinTolerance && std::abs(speed) >= lowSpeedRange(vehicle().spec));
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;
   bool grounded = false;

@@ -68,10 +68,8 @@ std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae, b
   const IntegratorSpec& is = spec().integrator;
   if (is.method == IntegratorMethod::Bdf) {
     integ::BdfOptions o = is.bdf;
-    if (derived) {  // FidelitySpec says why
-      o.newtonIterations = spec().fidelity.newtonIterations;
-      o.stopWithinTolerance = spec().fidelity.stopWithinTolerance;
-    }
+    o.stopWithinTolerance = spec().fidelity.stopWithinTolerance;  // every rung; FidelitySpec says why
+    if (derived) o.newtonIterations = spec().fidelity.newtonIterations;
     return std::make_unique<integ::BdfIntegrator>(dae, o);
   }
   integ::ExplicitOptions o = is.explicitMethod;
