@@ -111,7 +111,7 @@ bench_table() {
         fidelity.newton_stops_within_tolerance=*) label="$label, the paper's two Newton iterations in full (\`--set $4\`; the default ends at the first within tolerance)" ;;
       esac
       perStep=$(( ($(ir 6) - $(ir 1)) / 500 ))
-      [ "$f" = linkage ] && linkageIr[$v]=$perStep
+      [ "$f" = linkage ] && [ -z "${4:-}" ] && linkageIr[$v]=$perStep  # the default run is the reference
       share=$(awk -v a="$perStep" -v b="${linkageIr[$v]}" 'BEGIN { printf "%.2f", a / b }')
       echo "| $label | $perStep | $share | $target | $(rtf) |"
     done
