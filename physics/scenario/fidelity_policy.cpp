@@ -72,9 +72,15 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
     return Eigen::Vector2d(com + o.x() * heading + o.y() * left + (d - s.odometer) * heading);
   };
   const double first = std::max(s.scanned, s.odometer);
-  if (first <= reach && levelAhead(first, reach, scanPoint)) {
-    // The terrain vouches for the whole stretch: the scan's positions, no rays.
-    for (double d = first; d <= reach; d += kScanStep) s.scanned = d + kScanStep;
+  if (first <= reach) {
+    // The terrain vouches for the whole stretch: the scan's positions, no
+    // rays. Asked first as far as kScanAhead beyond the look-ahead, so that a
+    // level road costs a query per wheel every few ticks, not every tick;
+    // where that stretch is not level, as far as the look-ahead only (what
+    // lies beyond is scanned when it comes into range, as always).
+    const double ahead = reach + kScanAhead;
+    const double last = levelAhead(first, ahead, scanPoint) ? ahead : levelAhead(first, reach, scanPoint) ? reach : -1;
+    for (double d = first; d <= last; d += kScanStep) s.scanned = d + kScanStep;
   }
   for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
     for (const Eigen::Vector2d& o : offsets_)

@@ -11,8 +11,10 @@
 //    that is one level plane is not scanned at all, and a stretch the
 //    terrain vouches for as a whole (Terrain::levelOver: a ground's plane
 //    and its meshes' triangles there all level) costs a query per wheel (a
-//    box around its strip), not a ray per wheel every kScanStep. The
-//    decisions are the rays' either way.
+//    box around its strip), not a ray per wheel every kScanStep; a level
+//    stretch is asked for kScanAhead beyond the look-ahead at once (a query
+//    every few ticks, not every tick). The decisions are the rays' either
+//    way; a stretch found rough is acted on only once within the look-ahead.
 //  - The ground under each wheel now (the contact planes of the last step)
 //    must be the road plane too: a car standing on a hill or a curb is not
 //    on the road plane, whatever the scan says of the road ahead.
@@ -71,6 +73,7 @@ class FidelityPolicy {
   static constexpr double kLookAhead = 0.6;     // s
   static constexpr double kMinLookAhead = 3.0;  // m
   static constexpr double kScanStep = 0.1;      // m
+  static constexpr double kScanAhead = 2.0;     // m past the look-ahead a level stretch is vouched for at once
   static constexpr double kMargin = 1.0;        // m past the last rough point
   static constexpr double kSaturation = 0.8;    // of the tyre's friction
   static constexpr double kCalm = 1.0;          // s
