@@ -67,25 +67,30 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
   // wheels, at the start) to the look-ahead, along the heading.
   const double reach = s.odometer + std::max(kMinLookAhead, std::abs(speed) * kLookAhead);
   const Eigen::Vector2d heading(pm::cos(yaw), pm::sin(yaw)), left(-heading.y(), heading.x());
-  if (terrain_.levelEverywhere()) s.scanned = reach;  // a level plane: nothing to find
-  auto scanPoint = [&](const Eigen::Vector2d& o, double d) {
-    return Eigen::Vector2d(com + o.x() * heading + o.y() * left + (d - s.odometer) * heading);
-  };
-  const double first = std::max(s.scanned, s.odometer);
-  if (first <= reach) {
-    // The terrain vouches for the whole stretch: the scan's positions, no
-    // rays. Asked first as far as kScanAhead beyond the look-ahead, so that a
-    // level road costs a query per wheel every few ticks, not every tick;
-    // where that stretch is not level, as far as the look-ahead only (what
-    // lies beyond is scanned when it comes into range, as always).
-    const double ahead = reach + kScanAhead;
-    const double last = levelAhead(first, ahead, scanPoint) ? ahead : levelAhead(first, reach, scanPoint) ? reach : -1;
-    for (double d = first; d <= last; d += kScanStep) s.scanned = d + kScanStep;
-  }
-  for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
-    for (const Eigen::Vector2d& o : offsets_)
-      if (!level(scanPoint(o, d))) s.fullUntil = std::max(s.fullUntil, d + kMargin);
-    s.scanned = d + kScanStep;
+  if (terrain_.levelEverywhere()) {
+    s.scanned = reach;  // a level plane: nothing to find, nothing to ask
+  } else {
+    auto scanPoint = [&](const Eigen::Vector2d& o, double d) {
+      return Eigen::Vector2d(com + o.x() * heading + o.y() * left + (d - s.odometer) * heading);
+    };
+    const double first = std::max(s.scanned, s.odometer);
+    if (first <= reach) {
+      // The terrain vouches for the whole stretch: the scan's positions, no
+      // rays. Asked first as far as kScanAhead beyond the look-ahead, so that a
+      // level road costs a query per wheel every few ticks, not every tick;
+      // where that stretch is not level, as far as the look-ahead only (what
+      // lies beyond is scanned when it comes into range, as always).
+      const double ahead = reach + kScanAhead;
+      const double last = levelAhead(first, ahead, scanPoint)   ? ahead
+                          : levelAhead(first, reach, scanPoint) ? reach
+                                                                : -1;
+      for (double d = first; d <= last; d += kScanStep) s.scanned = d + kScanStep;
+    }
+    for (double d = std::max(s.scanned, s.odometer); d <= reach; d += kScanStep) {
+      for (const Eigen::Vector2d& o : offsets_)
+        if (!level(scanPoint(o, d))) s.fullUntil = std::max(s.fullUntil, d + kMargin);
+      s.scanned = d + kScanStep;
+    }
   }
   bool saturated = false;  // or a wheel in the air, or off the road plane, or beyond the certified range
   double lowestMu = INFINITY;
