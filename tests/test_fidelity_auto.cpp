@@ -1,7 +1,8 @@
 // `[fidelity] suspension = "auto"` (scenario/fidelity_policy.h): the state
 // mapped between the kinematic and planar models (vehicle/rung_mapping.h),
 // switches in mid-run against a run on the kinematic model alone, the switch
-// up ahead of a curb, and a run restored from a state on the planar model.
+// up ahead of a curb (in a scene, and the policy's own scan against the
+// rays), and a run restored from a state on the planar model.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -225,6 +226,17 @@ TEST(FidelityAuto, SwitchesMoveTheChassisByLessThanTheLimit) {
   EXPECT_LE(r.fidelity.maxTurn, scenario::FidelityPolicy::kMaxTurn);
 }
 
+// A policy for a car of the sedan's size on the road plane z = 0: its
+// wheels' offsets from the centre of mass (x forward, y left), default
+// tyres, no limit on lateral acceleration.
+const std::array<Eigen::Vector2d, 4> kWheelOffsets{Eigen::Vector2d(1.2, 0.8), Eigen::Vector2d(1.2, -0.8),
+                                                   Eigen::Vector2d(-1.3, 0.8), Eigen::Vector2d(-1.3, -0.8)};
+scenario::FidelityPolicy sedanSizedPolicy(const terrain::Terrain& t) {
+  const std::array<tyre::TyreParams, 4> tyres{tyre::FialaParams{}, tyre::FialaParams{}, tyre::FialaParams{},
+                                              tyre::FialaParams{}};
+  return scenario::FidelityPolicy(t, 0.0, kWheelOffsets, tyres, INFINITY);
+}
+
 // The road scan's shortcut (Terrain::levelOver) against the rays it stands
 // for: over the proving ground (a ground with the circuit's mesh, curbs,
 // a gravel trap, a slope, a heightfield section), boxes along the circuit's
@@ -236,11 +248,7 @@ TEST(FidelityAuto, SwitchesMoveTheChassisByLessThanTheLimit) {
 TEST(FidelityAuto, LevelShortcutNeverVouchesForGroundTheRaysFindOffTheRoadPlane) {
   const terrain::TerrainData data = terrain::loadTerrain(std::string(BDFCAR_SOURCE_DIR) + "/assets/terrain/proving_ground.toml");
   const std::unique_ptr<terrain::Terrain> ground = terrain::makeTerrain(data);
-  const std::array<tyre::TyreParams, 4> tyres{tyre::FialaParams{}, tyre::FialaParams{}, tyre::FialaParams{},
-                                              tyre::FialaParams{}};
-  const std::array<Eigen::Vector2d, 4> offsets{Eigen::Vector2d(1.2, 0.8), Eigen::Vector2d(1.2, -0.8),
-                                               Eigen::Vector2d(-1.3, 0.8), Eigen::Vector2d(-1.3, -0.8)};
-  const scenario::FidelityPolicy policy(*ground, 0.0, offsets, tyres, INFINITY);
+  const scenario::FidelityPolicy policy = sedanSizedPolicy(*ground);
   terrain::WorldCentreLine line;
   ASSERT_TRUE(terrain::findCentreLine(data, "circuit", line));
   auto query = [](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
@@ -305,6 +313,68 @@ TEST(FidelityAuto, LevelShortcutNeverVouchesForGroundTheRaysFindOffTheRoadPlane)
   EXPECT_GT(onCentre, centreBoxes / 2) << "the shortcut vouches for too little of the circuit's centre line";
   EXPECT_GT(refusedByRays, 100) << "the boxes never met a curb, slope or rough ground: the test tests nothing";
   EXPECT_GT(vouched, 0);
+}
+
+// The scan asks the terrain for a level stretch beyond the look-ahead (a
+// query every few ticks), but rough ground found there is acted on only once
+// it is within the look-ahead: on a straight run at 20 m/s towards a curb
+// across the road (a ground with one piece: 10 cm high, 45-degree faces),
+// the policy goes to the full model when the look-ahead first reaches the
+// curb, not kScanAhead earlier, and stays there until the last wheel is
+// kMargin past it. Where each wheel meets the curb comes from the rays
+// (FidelityPolicy::level along its line, every millimetre), not from the
+// scan; the tolerance is the scan's step and a tick's travel.
+TEST(FidelityAuto, RoughGroundIsActedOnOnlyWithinTheLookAhead) {
+  terrain::TerrainData curb;
+  curb.kind = terrain::TerrainKind::Mesh;
+  const double xs[4] = {-0.1, 0.0, 0.5, 0.6}, zs[4] = {0.0, 0.1, 0.1, 0.0};
+  for (int i = 0; i < 4; ++i)
+    for (double y : {-5.0, 5.0}) curb.vertices.emplace_back(xs[i], y, zs[i]);
+  for (int i = 0; i < 3; ++i) {  // vertex 2i at y = -5, 2i + 1 at y = +5: counter-clockwise from above
+    curb.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    curb.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  terrain::TerrainData ground;
+  ground.kind = terrain::TerrainKind::Ground;
+  ground.pieces.push_back(terrain::GroundPiece{"curb", curb, Eigen::Vector3d(30.0, 0.0, 0.0), 0.0});
+  const std::unique_ptr<terrain::Terrain> t = terrain::makeTerrain(ground);
+  const scenario::FidelityPolicy policy = sedanSizedPolicy(*t);
+
+  // Odometer distances (the centre of mass's x) over which some wheel is on
+  // ground the rays find off the road plane.
+  double roughFrom = INFINITY, roughTo = -INFINITY;
+  for (const Eigen::Vector2d& o : kWheelOffsets)
+    for (double x = 25.0; x <= 35.0; x += 1e-3)
+      if (!policy.level(Eigen::Vector2d(x, o.y()))) {
+        roughFrom = std::min(roughFrom, x - o.x());
+        roughTo = std::max(roughTo, x - o.x());
+      }
+  ASSERT_TRUE(std::isfinite(roughFrom)) << "the rays never met the curb: the test tests nothing";
+
+  const double speed = 20.0, tick = 0.01;
+  const double lookAhead = std::max(scenario::FidelityPolicy::kMinLookAhead, speed * scenario::FidelityPolicy::kLookAhead);
+  std::array<vehicle::WheelContact, 4> wheels;
+  for (vehicle::WheelContact& w : wheels) {  // on the road plane, well inside the tyres' friction
+    w.plane.valid = true;
+    w.acceptedInContact = true;
+    w.acceptedFz = 4000;
+  }
+  scenario::FidelityPolicy::State s;
+  double firstFull = NAN, lastFull = NAN;
+  for (int k = 0; k < 3000; ++k) {
+    const double x = s.odometer + speed * tick;  // straight along x from the origin: the odometer after the tick
+    const auto d = policy.decide(s, Eigen::Vector2d(x, 0.0), 0.0, speed, 0.0, wheels, tick);
+    if (d == scenario::FidelityPolicy::Decision::Full) {
+      if (std::isnan(firstFull)) firstFull = s.odometer;
+      lastFull = s.odometer;
+    }
+  }
+  ASSERT_FALSE(std::isnan(firstFull)) << "the policy never asked for the full model";
+  const double slack = scenario::FidelityPolicy::kScanStep + speed * tick + 1e-9;
+  EXPECT_NEAR(firstFull, roughFrom - lookAhead, slack)
+      << "the full model from " << firstFull << " m, the look-ahead reaches the curb at " << roughFrom - lookAhead << " m";
+  EXPECT_NEAR(lastFull, roughTo + scenario::FidelityPolicy::kMargin, slack);
+  EXPECT_EQ(s.missed, 0);
 }
 
 }  // namespace
