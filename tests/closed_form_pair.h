@@ -151,4 +151,71 @@ inline void expectMassMatrixIsTheResidualsDerivative(vehicle::ClosedFormCar& car
   EXPECT_NEAR((M - M.transpose()).norm(), 0.0, 1e-12 * M.norm());
 }
 
+// The wheel spins' Jacobian columns from the force laws alone
+// (ClosedFormCar::fastColumnParts, what the BDF integrator's fast-column
+// refresh takes in place of a residual per column) against the second
+// algorithm they replace: forward differences of the whole residual. A spin
+// column's rest (the wheel's inertia, its gyroscopic and steering
+// couplings) is linear in the spins, so whole - parts is the same at any
+// spins: at v and at vOther (the same state, the spins moved: tyres
+// saturated, a slipping clutch). Returns the largest difference of the
+// rests over the largest change of the parts between the two (which must
+// be large: the tyres' slip stiffness falls tenfold when they saturate).
+template <class Car>
+double spinPartsError(Pair<Car>& p, double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& vOther) {
+  const std::vector<int>& spins = p.car.fastColumns();
+  const integ::DaeSizes n = p.car.sizes();
+  integ::Message msg;
+  const integ::Vec a = integ::Vec::Zero(n.nv), lambda;
+  // The accepted step a tenth of a step back: the brakes' springs move with the spins.
+  p.car.beginStep(t, q, v);
+  p.car.forces().markAccepted(t - 0.001);
+  auto rest = [&](const integ::Vec& vel, integ::Mat& parts) {
+    integ::Residual r0, r1;
+    r0.resize(n);
+    r1.resize(n);
+    EXPECT_EQ(p.car.residual(t, q, vel, a, lambda, r0, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+    integ::Mat whole(n.nv, static_cast<int>(spins.size()));
+    for (int k = 0; k < whole.cols(); ++k) {
+      integ::Vec vk = vel;
+      const double h = 1.5e-8 * std::max(1.0, std::abs(vel(spins[k])));
+      vk(spins[k]) += h;
+      EXPECT_EQ(p.car.residual(t, q, vk, a, lambda, r1, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+      whole.col(k) = (r1.F - r0.F) / h;
+    }
+    // The parts at the state of the last residual: evaluate it there again.
+    EXPECT_EQ(p.car.residual(t, q, vel, a, lambda, r0, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+    EXPECT_TRUE(p.car.hasFastColumnParts());
+    p.car.fastColumnParts(t, parts);
+    return integ::Mat(whole - parts);
+  };
+  integ::Mat parts, partsOther;
+  const integ::Mat restHere = rest(v, parts), restThere = rest(vOther, partsOther);
+  const double change = (parts - partsOther).cwiseAbs().maxCoeff();
+  EXPECT_GT(change, 100.0) << "the spins moved the force laws' columns by nothing: the case tests nothing";
+  return (restHere - restThere).cwiseAbs().maxCoeff() / change;
+}
+
+// spinPartsError over states (built by makeState as the accelerations'
+// cases), each near free rolling in the tyres' linear range against a
+// locked wheel, one spinning up and one in reverse (saturated); with the
+// brakes off (their damping would hide the tyres) and on; a powertrain's
+// clutch slipping where the car has one (Pair::inputs).
+template <class Car, class State, class MakeState>
+void expectSpinColumnsFromTheForceLaws(Pair<Car>& p, const std::vector<State>& states, MakeState makeState) {
+  for (const bool brakes : {false, true})
+    for (const State& s : states) {
+      for (int w = 0; w < 4; ++w) p.inputs(w, w >= 2 ? 300.0 : 0.0, brakes ? 800.0 + 300.0 * w : 0.0);
+      p.rack.travel = 0.01;
+      integ::Vec q, v;
+      makeState(p.v, s, q, v);
+      integ::Vec vOther = v;
+      const std::array<double, 4> times{0.0, 1.6, -0.5, 1.07};
+      for (int w = 0; w < 4; ++w) vOther(p.car.spinV(w)) *= times[w];
+      // Forward differences of a residual of ~1e4 N with increments of ~1e-6
+      // rad/s carry ~1e-6 of the columns' scale; 1e-4 leaves room for that.
+      EXPECT_LT(spinPartsError(p, 0.5, q, v, vOther), 1e-4) << "brakes " << brakes;
+    }
+}
+
 }  // namespace bdfcar::testing_closed_form

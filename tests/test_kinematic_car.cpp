@@ -142,6 +142,13 @@ TEST_P(KinematicCarOf, CoordinatesMapToTheMultibodyModelAndBack) {
     EXPECT_EQ(qm(p.v.model.bodies[c.drivenBody].qIndex + c.drivenCoordinate), -0.02);
 }
 
+TEST_P(KinematicCarOf, SpinColumnsFromTheForceLawsAreTheResiduals) {
+  // Cornering, and rolled far (a wheel in the air).
+  Pair p(vehicleNamed(GetParam()).vehicle());
+  testing_closed_form::expectSpinColumnsFromTheForceLaws(p, std::vector<State>{State{20, 1.5, 0.3, 0.03, -0.01, 0.2, -0.1, 0.025, 0.1, 0.02, 0.3, 0.05},
+                                                     State{10, 0.5, 0.2, 0.12, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, makeState);
+}
+
 INSTANTIATE_TEST_SUITE_P(Vehicles, KinematicCarOf, ::testing::Values("sedan", "sedan_drive", "paper", "sedan as drawn"),
                          [](const ::testing::TestParamInfo<const char*>& i) {
                            std::string n = i.param;

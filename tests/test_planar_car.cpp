@@ -183,6 +183,13 @@ TEST_P(PlanarCarOf, CoordinatesMapToTheMultibodyModelAndBack) {
   for (const mb::CutJoint& c : p.v.model.cutJoints) EXPECT_EQ(qm(p.v.model.bodies[c.drivenBody].qIndex), -0.02);
 }
 
+TEST_P(PlanarCarOf, SpinColumnsFromTheForceLawsAreTheResiduals) {
+  // Cornering, and rolled far (a wheel in the air).
+  Pair p(vehicleNamed(GetParam()).vehicle());
+  testing_closed_form::expectSpinColumnsFromTheForceLaws(p, std::vector<State>{State{20, 1.5, 0.3, 0.03, -0.01, 0.2, -0.1, 0.05},
+                                                     State{10, 0.5, 0.2, 0.2, 0.0, 0.0, 0.0, 0.0}}, makeState);
+}
+
 INSTANTIATE_TEST_SUITE_P(Vehicles, PlanarCarOf, ::testing::Values("sedan", "sedan_drive"));
 
 TEST(PlanarCar, RefusesWhatIsNotAPlanarModel) {

@@ -1,5 +1,6 @@
 #include "vehicle/closed_form_car.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +37,34 @@ ClosedFormCar::SpinJoint ClosedFormCar::spinJoint(const mb::Body& b, const std::
   out.sign = axis.y() > 0 ? 1.0 : -1.0;
   out.symmetric = transverse * across + out.inertia * axis * axis.transpose();
   return out;
+}
+
+void ClosedFormCar::fastColumnParts(double t, integ::Mat& parts) {
+  const int m = static_cast<int>(fastColumns_.size());
+  parts.setZero(n_, m);
+  const double h = forces_.sinceAccepted(t);
+  const bool driveline = engineV() >= 0;
+  const VehicleForces::DrivelineTorques T0 =
+      driveline ? forces_.drivelineAt(engineSpeed_, relativeSpin_, h) : VehicleForces::DrivelineTorques{};
+  for (int c = 0; c < m; ++c) {
+    const int w = c;  // fastColumns_: the spins in wheel order
+    auto col = parts.col(c);
+    const double sign = spinSign(w), dv = VehicleForces::spinIncrement(kinematics_[w].spinRate);
+    tyre::WheelKinematics k = kinematics_[w];
+    k.spinRate += sign * dv;  // the joint rate moves the wheel's spin about its y by sign
+    addTyreForces(w, forces_.tyreAt(w, k, h), 1.0 / dv, col);
+    addTyreForces(w, forces_.outputs()[w].out, -1.0 / dv, col);
+    const double spin = relativeSpin_[w];
+    col(spinV(w)) -= sign * (forces_.brakeTorque(w, spin + sign * dv, h) - forces_.brakeTorque(w, spin, h)) / dv;
+    if (!driveline) continue;
+    const std::vector<int>& driven = forces_.drivenWheels();
+    if (std::find(driven.begin(), driven.end(), w) == driven.end()) continue;
+    std::array<double, 4> moved = relativeSpin_;
+    moved[w] += sign * dv;
+    const VehicleForces::DrivelineTorques T1 = forces_.drivelineAt(engineSpeed_, moved, h);
+    col(engineV()) -= ((T1.engine - T1.clutch) - (T0.engine - T0.clutch)) / dv;
+    for (int u : driven) addDriveTorque(u, (T1.drive[u] - T0.drive[u]) / dv, col);
+  }
 }
 
 const pm::SinCos& ClosedFormCar::baseHeading(double yaw) const {

@@ -61,6 +61,15 @@ class ClosedFormCar : public integ::Dae {
     return true;
   }
   const std::vector<int>& fastColumns() const override { return fastColumns_; }
+  // The wheel spins' columns from their force laws alone, at the last
+  // residual's state (integ::Dae::fastColumnParts): each tyre again at its
+  // spin moved by a forward difference, its brake, a powertrain's driveline
+  // (the clutch and the differential: the crank's torque and every driven
+  // wheel's), taken into the equations as the residual takes them
+  // (addTyreForces, addDriveTorque). A refresh then costs four tyre
+  // evaluations, not four residuals.
+  bool hasFastColumnParts() const override { return true; }
+  void fastColumnParts(double t, integ::Mat& parts) override;
   // The chassis' joint (its first coordinates), then plain vector coordinates.
   void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
@@ -97,6 +106,13 @@ class ClosedFormCar : public integ::Dae {
   mb::SignalValue rackInStep(double t) const;
   // The multibody model's driven coordinates (q, v) set from the rack signal at t.
   void driveMultibody(double t, integ::Vec& qm, integ::Vec& vm) const;
+  // Wheel w's tyre output, its drive torque (per N m) and its spin joint's
+  // sign along the wheel's y, into the equations as the last residual took
+  // them (its geometry): scale times what they add to F (the inertial less
+  // the applied forces) added to col.
+  virtual void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const = 0;
+  virtual void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const = 0;
+  virtual double spinSign(int w) const = 0;
   // The acceptance both closed forms make: a non-finite or runaway state is
   // fatal; otherwise the force laws advance over the step with the last
   // residual's wheel kinematics (as the multibody model's acceptance does).
@@ -117,6 +133,7 @@ class ClosedFormCar : public integ::Dae {
   // their carriers (what the step's acceptance advances the force laws with).
   std::array<tyre::WheelKinematics, 4> kinematics_;
   std::array<double, 4> relativeSpin_{};
+  double engineSpeed_ = 0;  // a powertrain's crank rate relative to the chassis, at the last residual
 
  private:
   // The sine and cosine of a planar base's heading at the last base angle

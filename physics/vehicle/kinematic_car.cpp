@@ -232,6 +232,8 @@ integ::EvalStatus KinematicCar::residual(double t, const integ::Vec& q, const in
   const VehicleSpec& spec = vehicle_.spec;
   const Mat3 R0 = mb::quatToMatrix(q.data() + 3);
   const Vec3 p = q.head<3>();
+  chassisAxes_ = R0;
+  chassisOrigin_ = p;
   const Vec3 V = v.segment<3>(0), om = v.segment<3>(3), alpha = a.segment<3>(3);
   const Vec3 g = R0.transpose() * gravity_;
   const Vec3 A0 = a.segment<3>(0) + om.cross(V);  // the chassis origin's acceleration
@@ -264,7 +266,7 @@ integ::EvalStatus KinematicCar::residual(double t, const integ::Vec& q, const in
     }
   }
 
-  std::array<CornerMotion, 4> cm;
+  std::array<CornerMotion, 4>& cm = motions_;  // kept: fastColumnParts takes the tyres as this residual does
   for (int w = 0; w < 4; ++w) cornerMotion(w, q(TravelQ + w), v(TravelV + w), cm[w], true);
   // Anti-roll bars between the wheel centres and the chassis, on the
   // travels: a pair of forces at the same point, working on the travel alone.
@@ -321,7 +323,8 @@ integ::EvalStatus KinematicCar::residual(double t, const integ::Vec& q, const in
   // wheels' speeds now (the crank's own torque: the engine's less the
   // clutch's), or as the driver holds them.
   const bool engine = engineMultibodyV_ >= 0;
-  const double crankTorque = engine ? forces_.drivelineTorques(v(EngineV), relativeSpin_, h) : 0.0;
+  engineSpeed_ = engine ? v(EngineV) : 0.0;
+  const double crankTorque = engine ? forces_.drivelineTorques(engineSpeed_, relativeSpin_, h) : 0.0;
   for (int w = 0; w < 4; ++w) {
     const double drive = forces_.wheels()[w].driveTorque;
     if (drive == 0.0) continue;
@@ -437,6 +440,34 @@ void KinematicCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, int
     q(EngineQ) = qm(engineMultibodyQ_);
     v(EngineV) = vm(engineMultibodyV_);
   }
+}
+
+// As the residual takes them: the tyre's force and moment on the carrier
+// (about its origin), the carrier's on the travel and the chassis, the
+// moment about the spin axis on the spin.
+void KinematicCar::addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const {
+  if (!tyre.inContact) return;
+  const CornerMotion& c = motions_[w];
+  const Corner& C = corners_[w];
+  const Vec3 centre = c.t + c.R * C.centre, spinAxis = C.spinSign * (c.R * C.axisY);
+  const Vec3 F = scale * (chassisAxes_.transpose() * tyre.force), M = scale * (chassisAxes_.transpose() * tyre.moment);
+  const Vec3 at = chassisAxes_.transpose() * (tyre.point - chassisOrigin_);
+  const Vec3 onCarrier = (at - c.t).cross(F) + M;
+  col.segment<3>(0) -= F;
+  col.segment<3>(3) -= onCarrier + c.t.cross(F);
+  col(TravelV + w) -= c.ts.dot(F) + c.ws.dot(onCarrier);
+  col(SpinV + w) -= spinAxis.dot((at - centre).cross(F) + M);
+}
+
+void KinematicCar::addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const {
+  const double sign = corners_[w].spinSign;
+  col(SpinV + w) -= scale * sign;
+  const DriveReaction reaction = vehicle_.spec.driveReaction;
+  if (reaction == DriveReaction::Carrier) return;
+  const CornerMotion& m = motions_[w];
+  const Vec3 torque = scale * (m.R * corners_[w].axisY);  // on the wheel about its y, the carrier takes it back
+  col(TravelV + w) -= m.ws.dot(torque);
+  if (reaction == DriveReaction::None) col.segment<3>(3) -= torque;  // Chassis: the chassis takes it back too
 }
 
 }  // namespace bdfcar::vehicle

@@ -61,6 +61,11 @@ class KinematicCar final : public ClosedFormCar {
                              integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
 
+ protected:
+  void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const override;
+  void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const override;
+  double spinSign(int w) const override { return corners_[w].spinSign; }
+
  private:
   // A corner: the carrier and its wheel as one body over the carrier's table.
   struct Corner {
@@ -103,6 +108,11 @@ class KinematicCar final : public ClosedFormCar {
   double engineInertia_ = 0;
   int engineMultibodyQ_ = -1, engineMultibodyV_ = -1;
   std::array<Corner, 4> corners_;
+  // Where the last residual took the tyres and drive torques
+  // (fastColumnParts): the chassis' attitude and origin, the corners' motion.
+  Mat3 chassisAxes_ = Mat3::Identity();
+  Vec3 chassisOrigin_ = Vec3::Zero();
+  std::array<CornerMotion, 4> motions_;
   // Each steered corner's table contracted along the rack at the step's
   // rack travel (SplineGrid::RowCache): the residuals of a step evaluate it
   // along the travel alone.

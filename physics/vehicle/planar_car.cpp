@@ -343,10 +343,15 @@ integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ
     Qspin[w] += W.spinSign * forces_.brakeTorque(w, relativeSpin_[w], h);
     tyreAxis[w] = axis;
   }
+  turn_ = yaw;
+  origin_ = origin;
+  pitchAxis_ = e;
+  tyreAxis_ = tyreAxis;
   // Drive torques: a powertrain's from its driveline at the crank's and the
   // wheels' speeds now (the crank's own torque: the engine's less the
   // clutch's), or as the driver holds them.
-  const double crankTorque = engineV_ >= 0 ? forces_.drivelineTorques(v(Engine), relativeSpin_, h) : 0.0;
+  engineSpeed_ = engineV_ >= 0 ? v(Engine) : 0.0;
+  const double crankTorque = engineV_ >= 0 ? forces_.drivelineTorques(engineSpeed_, relativeSpin_, h) : 0.0;
   for (int w = 0; w < 4; ++w) {
     const double drive = forces_.wheels()[w].driveTorque;
     if (drive == 0.0) continue;
@@ -499,6 +504,36 @@ void PlanarCar::fromMultibody(const integ::Vec& qm, const integ::Vec& vm, integ:
     q(Engine) = qm(engineQ_);
     v(Engine) = vm(engineV_);
   }
+}
+
+// As the residual takes them: the tyre's force and yaw moment on the base,
+// the moment about the spin axis on the spin.
+void PlanarCar::addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const {
+  if (!tyre.inContact) return;
+  const Wheel& W = wheels_[w];
+  const Vec3 F = scale * turn_.toLocal(tyre.force), M = scale * turn_.toLocal(tyre.moment);
+  const Vec3 at = turn_.toLocal(tyre.point - origin_);
+  col(X) -= F.x();
+  col(Y) -= F.y();
+  col(Yaw) -= at.x() * F.y() - at.y() * F.x() + M.z();
+  col(Spin + w) -= (W.spinSign * W.axisY).dot((at - W.centre).cross(F) + M);
+}
+
+void PlanarCar::addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const {
+  const Wheel& W = wheels_[w];
+  const DriveReaction reaction = vehicle_.spec.driveReaction;
+  if (reaction == DriveReaction::Carrier) {
+    col(Spin + w) -= scale * W.spinSign;
+    return;
+  }
+  const Vec3 torque = scale * tyreAxis_[w];  // on the wheel about its tyre's axis; the base takes its yaw back
+  col(Yaw) -= torque.z();
+  col(Spin + w) -= W.spinSign * W.axisY.dot(torque);
+  if (reaction != DriveReaction::Chassis) return;
+  // The sprung body takes it back: on its yaw, roll and pitch partials.
+  col(Yaw) += torque.z();
+  col(Roll) += torque.x();
+  col(Pitch) += pitchAxis_.dot(torque);
 }
 
 }  // namespace bdfcar::vehicle

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "multibody/spline_grid.h"
+#include "terrain/terrain_data.h"
 #include "vehicle/closed_form_car.h"
 
 namespace bdfcar::vehicle {
@@ -66,6 +67,11 @@ class PlanarCar final : public ClosedFormCar {
                              const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
                              integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
+
+ protected:
+  void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const override;
+  void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const override;
+  double spinSign(int w) const override { return wheels_[w].spinSign; }
 
  private:
   // A wheel as the closed form sees it, in the base frame.
@@ -110,6 +116,12 @@ class PlanarCar final : public ClosedFormCar {
   int engineQ_ = -1, engineV_ = -1;  // the multibody model's crank coordinate
   double groundZ_ = 0;
   std::array<Wheel, 4> wheels_;
+  // Where the last residual took the tyres and drive torques
+  // (fastColumnParts): the base's heading and origin, the pitch axis, each
+  // tyre's axis (base frame).
+  terrain::HeadingTurn turn_;
+  Vec3 origin_ = Vec3::Zero(), pitchAxis_ = Vec3::UnitY();
+  std::array<Vec3, 4> tyreAxis_;
   std::vector<mb::SplineGrid> tables_;  // steered wheels over the rack travel: centre (3), y axis (3), spin per travel
   double steeringTime_;
   mb::SignalValue rackNow_;       // the rack the steering geometry is at

@@ -235,11 +235,11 @@ void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d
     auto part = parts.col(static_cast<int>(col - columns.begin()));
     const mb::Vec6 s = d.S.col(wl.spinV);  // the spindle's body-frame motion per unit joint rate
     tyre::WheelKinematics k = ks[w];
-    const double dv = kFiniteDifferenceStep * std::max(1.0, std::abs(k.spinRate));
+    const double dv = spinIncrement(k.spinRate);
     k.centreVelocity += d.R[wl.spindle] * (dv * s.head<3>());
     k.spinRate += dv * s(4);  // about the spindle's y
     const tyre::TyreOutput& base = outputs_[w].out;
-    const tyre::TyreOutput moved = tyres_[w].evaluate(k, latestGround(w), state_->wheels[w].slip, h, modelLoad(w));
+    const tyre::TyreOutput moved = tyreAt(w, k, h);
     mb::Vec6 df = mb::Vec6::Zero();
     if (moved.inContact) df += mb::bodyWrench(d, wl.spindle, moved.point, moved.force, moved.moment);
     if (base.inContact) df -= mb::bodyWrench(d, wl.spindle, base.point, base.force, base.moment);
@@ -257,6 +257,12 @@ void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d
     for (int u : driven_) addDriveTorqueColumn(model, d, u, ks[u], (T1.drive[u] - T0.drive[u]) / dv, part);
   }
 }
+
+tyre::TyreOutput VehicleForces::tyreAt(int w, const tyre::WheelKinematics& k, double h) const {
+  return tyres_[w].evaluate(k, latestGround(w), state_->wheels[w].slip, h, modelLoad(w));
+}
+
+double VehicleForces::spinIncrement(double spinRate) { return kFiniteDifferenceStep * std::max(1.0, std::abs(spinRate)); }
 
 void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
   // Positions only are current here.

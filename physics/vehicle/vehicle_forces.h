@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "multibody/multibody_dae.h"
 #include "terrain/height_lattice.h"
@@ -120,6 +121,13 @@ class VehicleForces final : public mb::ForceProvider {
   // slips, brake spring, the accepted tyre force) and casts its next contact
   // plane, hNext ahead; then markAccepted(t) once for the four.
   void acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext);
+  // Wheel w's tyre at kinematics k on the ground, slip state and load of
+  // its latest evaluation, h after the last accepted step, nothing stored:
+  // a closed-form model's fast columns (a tyre at a spin moved by
+  // spinIncrement), as addFastColumnParts takes a multibody model's.
+  tyre::TyreOutput tyreAt(int w, const tyre::WheelKinematics& k, double h) const;
+  // The forward-difference increment of a spin rate (rad/s) for its forces' column.
+  static double spinIncrement(double spinRate);
   // A powertrain's driveline at the crank's speed relative to the chassis
   // and the wheels' spins relative to their carriers: the crank's joint
   // torque (the engine's less the clutch's); the driven wheels' drive
@@ -127,6 +135,14 @@ class VehicleForces final : public mb::ForceProvider {
   // over an accepted step of length h.
   double drivelineTorques(double engineSpeed, const std::array<double, 4>& spins, double h);
   void acceptDriveline(double engineSpeed, const std::array<double, 4>& spins, double h);
+  // The driveline's torques at the crank's and the wheels' speeds, from its
+  // state, nothing stored (drivelineTorques stores them there).
+  struct DrivelineTorques {
+    double engine = 0, clutch = 0, output = 0;  // N m, N m, rad/s (the differential's output speed)
+    std::array<double, 4> drive{};              // N m, the driven wheels'
+  };
+  DrivelineTorques drivelineAt(double engine, const std::array<double, 4>& spins, double h) const;
+  const std::vector<int>& drivenWheels() const { return driven_; }
   void markAccepted(double t);
   double sinceAccepted(double t) const { return std::max(0.0, t - state_->lastAccepted); }
   // A planar model's load from its roll centres and pitch axis: the share of
@@ -199,13 +215,6 @@ class VehicleForces final : public mb::ForceProvider {
   void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
   void addDriveTorqueColumn(const mb::Model& model, const mb::Data& data, int wheel, const tyre::WheelKinematics& k,
                             double scale, Eigen::Ref<Eigen::VectorXd> out) const;
-  // The driveline's torques at the crank's and the wheels' speeds, from its
-  // state (drivelineTorques stores them there).
-  struct DrivelineTorques {
-    double engine = 0, clutch = 0, output = 0;  // N m, N m, rad/s (the differential's output speed)
-    std::array<double, 4> drive{};              // N m, the driven wheels'
-  };
-  DrivelineTorques drivelineAt(double engine, const std::array<double, 4>& spins, double h) const;
   void aerodynamics(mb::Data& data) const;
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(outputs_[w].modelLoad) : std::nullopt;
