@@ -526,7 +526,7 @@ void PlanarCar::addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) 
     col(Spin + w) -= scale * W.spinSign;
     return;
   }
-  const Vec3 torque = scale * tyreAxis_[w];  // on the wheel about its tyre's axis; the base takes its yaw back
+  const Vec3 torque = scale * tyreAxis_[w];  // on the wheel about its tyre's axis (its z share on the base, the wheel rides on it)
   col(Yaw) -= torque.z();
   col(Spin + w) -= W.spinSign * W.axisY.dot(torque);
   if (reaction != DriveReaction::Chassis) return;
