@@ -336,14 +336,15 @@ int expectGridHitsWhatTheTreeHits(const TerrainData& d, double xLo, double xHi, 
   return hits;
 }
 
-// On a bumpy mesh with a step, a sliver, two layers (a deck over the road)
-// and shared edges and vertices.
-TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
+// A bumpy mesh with a step, a sliver, two layers (a deck over the road) and
+// shared edges and vertices, its corner at (x0, y0).
+TerrainData bumpyMeshWithDeckAndSliver(double x0, double y0) {
   TerrainData d;
   d.kind = TerrainKind::Mesh;
   const int n = 40;
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) d.vertices.emplace_back(0.5 * i, 0.5 * j, 0.05 * std::sin(0.7 * i) * std::cos(0.4 * j) + (i > 20 ? 0.12 : 0.0));
+    for (int i = 0; i <= n; ++i)
+      d.vertices.emplace_back(x0 + 0.5 * i, y0 + 0.5 * j, 0.05 * std::sin(0.7 * i) * std::cos(0.4 * j) + (i > 20 ? 0.12 : 0.0));
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int a = j * (n + 1) + i;
@@ -352,14 +353,19 @@ TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
     }
   // A bridge deck 3 m above part of the road, and a sliver across it all.
   const int b = static_cast<int>(d.vertices.size());
-  for (const auto& [x, y] : {std::pair{4.0, 4.0}, {12.0, 4.0}, {12.0, 6.0}, {4.0, 6.0}}) d.vertices.emplace_back(x, y, 3.0);
+  for (const auto& [x, y] : {std::pair{4.0, 4.0}, {12.0, 4.0}, {12.0, 6.0}, {4.0, 6.0}}) d.vertices.emplace_back(x0 + x, y0 + y, 3.0);
   d.triangles.push_back({b, b + 1, b + 2});
   d.triangles.push_back({b, b + 2, b + 3});
   const int s = static_cast<int>(d.vertices.size());
-  d.vertices.emplace_back(0.1, 10.0, 0.5);
-  d.vertices.emplace_back(19.9, 10.02, 0.5);
-  d.vertices.emplace_back(19.9, 10.0, 0.6);
+  d.vertices.emplace_back(x0 + 0.1, y0 + 10.0, 0.5);
+  d.vertices.emplace_back(x0 + 19.9, y0 + 10.02, 0.5);
+  d.vertices.emplace_back(x0 + 19.9, y0 + 10.0, 0.6);
   d.triangles.push_back({s, s + 1, s + 2});
+  return d;
+}
+
+TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
+  const TerrainData d = bumpyMeshWithDeckAndSliver(0, 0);
   const int hits = expectGridHitsWhatTheTreeHits(d, -1, 21, -1, 21, 0.5, [](const Eigen::Vector3d& from, const Hit& a) {
     // Over the deck from above it: the deck; from under it: the road.
     if (from.x() > 4.1 && from.x() < 11.9 && from.y() > 4.1 && from.y() < 5.9) {
@@ -368,6 +374,15 @@ TEST(BulletTerrain, RaysDownThroughThePlanGridHitWhatTheTreeHits) {
     }
   });
   EXPECT_GT(hits, 15000);
+}
+
+// The same mesh kilometres from its origin, where Bullet's single precision
+// rounds the corners and the ray to millimetres: the grid skips a triangle
+// only where the tree's test rejects it too (the plan-view margins).
+TEST(BulletTerrain, RaysDownThroughThePlanGridFarFromTheOriginHitWhatTheTreeHits) {
+  const double x0 = 6000.0, y0 = -3500.0;
+  const TerrainData d = bumpyMeshWithDeckAndSliver(x0, y0);
+  EXPECT_GT(expectGridHitsWhatTheTreeHits(d, x0 - 1, x0 + 21, y0 - 1, y0 + 21, 0.5), 15000);
 }
 
 // A road meshed in strips across its whole width (the washboard asset: ridges

@@ -7,6 +7,7 @@
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -29,6 +30,11 @@ namespace {
 // wide as the road holding hundreds of strips each. Empty where it would not
 // pay: a mesh whose triangles span many cells each (a few large faces,
 // slivers at all angles) keeps the tree.
+//
+// Of the triangles whose box holds the ray's point, those whose plan view
+// it lies clearly outside (PlanEdges) are not tested at all: on a road of
+// long slivers the boxes of four or five hold each point, the triangle of
+// one or two.
 class PlanGrid {
  public:
   explicit PlanGrid(const TerrainData& data) {
@@ -61,6 +67,10 @@ class PlanGrid {
       return;
     }
     for (Box& b : boxes_) b = {b.xLo - margin_, b.xHi + margin_, b.yLo - margin_, b.yHi + margin_};
+    const double reach = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+    edges_.reserve(n);
+    for (const auto& t : data.triangles)
+      edges_.push_back(PlanEdges::of(data.vertices[t[0]], data.vertices[t[1]], data.vertices[t[2]], reach));
     std::vector<int> count(static_cast<size_t>(nx_) * ny_ + 1, 0);
     auto forCells = [&](size_t k, auto&& f) {
       const Box& b = boxes_[k];
@@ -91,8 +101,9 @@ class PlanGrid {
     if (!(i < nx_ && j < ny_)) return;
     const size_t c = static_cast<size_t>(j) * nx_ + static_cast<size_t>(i);
     for (int k = start_[c]; k < start_[c + 1]; ++k) {
-      const Box& b = boxes_[static_cast<size_t>(triangles_[k])];
-      if (x >= b.xLo && x <= b.xHi && y >= b.yLo && y <= b.yHi) f(triangles_[k]);
+      const size_t t = static_cast<size_t>(triangles_[k]);
+      const Box& b = boxes_[t];
+      if (x >= b.xLo && x <= b.xHi && y >= b.yLo && y <= b.yHi && edges_[t].near(x, y)) f(triangles_[k]);
     }
   }
   // The triangles of every cell the plan-view box [lo, hi] touches (a
@@ -118,14 +129,50 @@ class PlanGrid {
     start_.clear();
     triangles_.clear();
     boxes_.clear();
+    edges_.clear();
   }
   struct Box {
     double xLo, xHi, yLo, yHi;
+  };
+  // A triangle's plan view grown by a margin, as three half-planes: a point
+  // with a negative distance to one (n . p + c < 0) is outside it, where the
+  // ray's hit test (ray_segment.cpp, in Bullet's single precision) rejects
+  // it too. The margin is a hundred times that test's rounding: 1 cm, 1e-5
+  // of the grid's largest coordinate (the ray's point and the corners
+  // rounded to single precision, the products of the test), 1e-3 of the
+  // longest side (the test's determinant on a triangle at least 1e-4 of its
+  // longest side squared in area). Thinner in plan view (a sliver, a wall):
+  // always tested.
+  struct PlanEdges {
+    std::array<float, 3> nx{}, ny{}, c{1.0f, 1.0f, 1.0f};
+    bool near(double x, double y) const {
+      return nx[0] * x + ny[0] * y + c[0] >= 0 && nx[1] * x + ny[1] * y + c[1] >= 0 && nx[2] * x + ny[2] * y + c[2] >= 0;
+    }
+    static PlanEdges of(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double reach) {
+      const std::array<Eigen::Vector2d, 3> v{a.head<2>(), b.head<2>(), c.head<2>()};
+      const Eigen::Vector2d e1 = v[1] - v[0], e2 = v[2] - v[0];
+      const double area2 = e1.x() * e2.y() - e1.y() * e2.x();  // twice the signed area
+      double longest = 0;
+      for (int i = 0; i < 3; ++i) longest = std::max(longest, (v[(i + 1) % 3] - v[i]).norm());
+      PlanEdges out;
+      if (!(std::abs(area2) >= 2e-4 * longest * longest) || !std::isfinite(area2)) return out;  // always tested
+      const double margin = 1e-2 + 1e-5 * reach + 1e-3 * longest;
+      const double side = area2 > 0 ? 1.0 : -1.0;  // inward is left of each side when counter-clockwise
+      for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector2d d = v[(i + 1) % 3] - v[i];
+        const Eigen::Vector2d inward = side * Eigen::Vector2d(-d.y(), d.x()) / d.norm();
+        out.nx[i] = static_cast<float>(inward.x());
+        out.ny[i] = static_cast<float>(inward.y());
+        out.c[i] = static_cast<float>(margin - inward.dot(v[i]));
+      }
+      return out;
+    }
   };
   double x0_ = 0, y0_ = 0, cellX_ = 1, cellY_ = 1, margin_ = 0;
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, triangles_;
   std::vector<Box> boxes_;  // each triangle's plan view, grown by the margin
+  std::vector<PlanEdges> edges_;  // each triangle's plan view, grown by its own margin
 };
 
 struct TriangleSpan {
