@@ -352,7 +352,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     EvalStatus st;
     {
       ScopedTimer timer(opt_.timing, timers_.residual);
-      dae_.retract(node(0).q, d_, q_);
+      if (!qAtPredictor_) dae_.retract(node(0).q, d_, q_);
+      qAtPredictor_ = false;  // the iterate moves below
       st = dae_.residual(t, q_, v_, a_, lam_, r_, true, rep.message);
       ++st_->counters.residuals;
     }
@@ -603,12 +604,13 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   // The fixed count from the predictor with the Jacobian as it is (evaluated
   // here when due); when it stalls, recover().
   startFromPredictor();
+  qAtPredictor_ = true;
   bool fresh = false;
   if (jacobianDue || !haveBlocks_) {
-    dae_.retract(node(0).q, d_, q_);
     if (const EvalStatus st = evaluateJacobian(tNew, rep.message); st != EvalStatus::Ok) {
       rep.status = StepStatus::EvaluationFailed;
       rep.recoverable = st == EvalStatus::Recoverable;
+      qAtPredictor_ = false;
       return rep;
     }
     fresh = true;

@@ -192,6 +192,9 @@ class BdfIntegrator final : public Integrator {
   Vec xiQ_, xiV_;
   Vec dPred_, vPred_, aPred_, lamPred_;
   Vec d_, q_, v_, a_, lam_;                  // Newton iterate
+  // q_ already holds the predictor's configuration (substep retracted it
+  // for beginStep): the first iteration from the predictor skips the retract.
+  bool qAtPredictor_ = false;
   Vec d0_, v0_, a0_, lam0_;                  // the iterate before a damped full Newton correction
   Vec rate_, rhoQ_, rhoV_, tmpV_, rhs_, sol_, c_, e_;
   Vec dq_, dv_, da_, dlam_;
