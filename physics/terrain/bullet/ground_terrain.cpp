@@ -34,6 +34,13 @@ struct PlacedPiece {
   Eigen::Vector3d directionToWorld(const Eigen::Vector3d& v) const { return turn.toWorld(v); }
   Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const { return turn.toLocal(world - placement.at); }
   Eigen::Vector3d toWorld(const Eigen::Vector3d& local) const { return turn.toWorld(local) + placement.at; }
+  // Whether the box [lo, hi] meets the piece's world box: compared an axis
+  // at a time, most pieces lying beside a ray's box in x or y (Eigen's
+  // whole-vector reductions cost a tenth of a ray on a ground of ten pieces).
+  bool boxMeets(const Eigen::Vector3d& qlo, const Eigen::Vector3d& qhi) const {
+    return !(qhi.x() < lo.x() || qlo.x() > hi.x() || qhi.y() < lo.y() || qlo.y() > hi.y() || qhi.z() < lo.z() ||
+             qlo.z() > hi.z());
+  }
   bool covers(const Eigen::Vector3d& world) const {
     const Eigen::Vector2d q = toLocal(world).head<2>();
     return (q.array() >= footLo.array()).all() && (q.array() <= footHi.array()).all();
@@ -95,7 +102,7 @@ Hit GroundTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& d
   const Eigen::Vector3d lo = from.cwiseMin(to), hi = from.cwiseMax(to);
   Hit best;
   for (const PlacedPiece& p : pieces_) {
-    if ((hi.array() < p.lo.array()).any() || (lo.array() > p.hi.array()).any()) continue;
+    if (!p.boxMeets(lo, hi)) continue;
     Hit h = p.terrain->castRay(p.toLocal(from), p.directionToLocal(direction), maxDistance);
     if (!h.hit || (best.hit && h.distance > best.distance + kTie)) continue;
     h.point = p.toWorld(h.point);
@@ -118,7 +125,7 @@ bool GroundTerrain::levelOver(const LevelQuery& q) const {
   if (!plane_->levelOver(q)) return false;
   const Eigen::Vector3d lo(q.lo.x(), q.lo.y(), q.zBottom), hi(q.hi.x(), q.hi.y(), q.zTop);
   for (const PlacedPiece& p : pieces_) {
-    if ((hi.array() < p.lo.array()).any() || (lo.array() > p.hi.array()).any()) continue;
+    if (!p.boxMeets(lo, hi)) continue;
     LevelQuery local = q;
     Eigen::Vector2d a = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), b = -a;
     for (int k = 0; k < 4; ++k) {
