@@ -106,6 +106,53 @@ TEST(SplineGrid, RowCachedEvaluationIsTheDirectOne) {
   EXPECT_GT(hits, 100);  // evaluations where x stayed in the cached cell at the same y
 }
 
+TEST(SplineGrid, CurveEvaluationIsTheOneCoordinateSpline) {
+  // One coordinate, two grids on one axis sharing a lookup (the planar car's
+  // tables over the rack travel): against the function the samples come
+  // from (value O(h^4), slope O(h^3) well inside: the natural ends' error
+  // decays by 2 - sqrt(3) a node), the general evaluation (the
+  // same sums), and a grid on another axis refused the shared lookup.
+  const GridAxis ax{-0.06, 0.004, 31};
+  std::vector<std::vector<double>> a(2, std::vector<double>(ax.nodes)), b(1, std::vector<double>(ax.nodes));
+  for (int i = 0; i < ax.nodes; ++i) {
+    const double x = ax.start + i * ax.step;
+    a[0][i] = std::sin(20 * x);
+    a[1][i] = std::exp(5 * x);
+    b[0][i] = x * x * x;
+  }
+  const SplineGrid ga(ax, GridAxis{0, 1, 1}, a), gb(ax, GridAxis{0, 1, 1}, b);
+  const SplineGrid other(GridAxis{-0.06, 0.005, 25}, GridAxis{0, 1, 1}, std::vector<std::vector<double>>(1, std::vector<double>(25, 1.0)));
+  EXPECT_TRUE(ga.sameAxisX(gb));
+  EXPECT_FALSE(ga.sameAxisX(other));
+  for (double x : {-0.071, -0.06, -0.0413, -0.0213, 0.0, 0.0177, 0.06, 0.08}) {
+    const SplineGrid::CurvePoint at = ga.curvePoint(x);
+    SplineGrid::Curve ca, cb;
+    SplineGrid::Sample sa, sb;
+    ga.evalCurve(at, ca);
+    gb.evalCurve(at, cb);
+    ga.eval(x, 0.0, sa);
+    gb.eval(x, 0.0, sb);
+    EXPECT_EQ(ca.outside, x < ax.start || x > ax.end());
+    for (int c = 0; c < 2; ++c) {
+      EXPECT_DOUBLE_EQ(ca.f[c], sa.f[c]) << x;
+      EXPECT_DOUBLE_EQ(ca.df[c], sa.grad[c][0]) << x;
+      EXPECT_DOUBLE_EQ(ca.ddf[c], sa.hess[c][0]) << x;
+    }
+    EXPECT_DOUBLE_EQ(cb.f[0], sb.f[0]) << x;
+    EXPECT_DOUBLE_EQ(cb.df[0], sb.grad[0][0]) << x;
+    if (std::abs(x) < 0.025) {  // 8 nodes and more from either end
+      EXPECT_NEAR(ca.f[0], std::sin(20 * x), 1e-6) << x;
+      EXPECT_NEAR(ca.df[0], 20 * std::cos(20 * x), 1e-3) << x;
+      EXPECT_NEAR(ca.f[1], std::exp(5 * x), 1e-8) << x;
+      EXPECT_NEAR(cb.f[0], x * x * x, 1e-9) << x;
+      EXPECT_NEAR(cb.ddf[0], 6 * x, 1e-3) << x;
+    }
+  }
+  SplineGrid::Curve c;
+  const SplineGrid two(GridAxis{0, 1, 3}, GridAxis{0, 1, 3}, std::vector<std::vector<double>>(1, std::vector<double>(9, 0.0)));
+  EXPECT_THROW(two.evalCurve(two.curvePoint(0.5), c), std::logic_error);
+}
+
 TEST(SplineGrid, RefusesBadGrids) {
   const std::vector<std::vector<double>> two(1, std::vector<double>(2, 0.0));
   EXPECT_THROW(SplineGrid(GridAxis{0, 1, 2}, GridAxis{0, 1, 1}, two), std::invalid_argument);

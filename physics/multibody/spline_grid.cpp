@@ -154,6 +154,32 @@ void SplineGrid::eval(double x, double y, Sample& out) const {
   out.outside = outX || outY;
 }
 
+SplineGrid::CurvePoint SplineGrid::curvePoint(double x) const {
+  CurvePoint p;
+  double u;
+  p.cell = locate(x_, x, u, p.ex, p.outside);
+  const HermiteWeights w = hermite(u, x_.step);
+  p.w0 = w.w0;
+  p.w1 = w.w1;
+  p.w2 = w.w2;
+  return p;
+}
+
+void SplineGrid::evalCurve(const CurvePoint& at, Curve& out) const {
+  if (y_.nodes != 1) throw std::logic_error("spline grid: evalCurve on a grid of two coordinates");
+  for (int c = 0; c < components_; ++c) {
+    const double* a = node(c, at.cell);
+    const double* b = node(c, at.cell + 1);
+    const double g = at.w0[0] * a[0] + at.w0[1] * a[1] + at.w0[2] * b[0] + at.w0[3] * b[1];
+    const double gx = at.w1[0] * a[0] + at.w1[1] * a[1] + at.w1[2] * b[0] + at.w1[3] * b[1];
+    const double gxx = at.w2[0] * a[0] + at.w2[1] * a[1] + at.w2[2] * b[0] + at.w2[3] * b[1];
+    out.f[c] = g + at.ex * gx;
+    out.df[c] = gx;
+    out.ddf[c] = at.outside ? 0.0 : gxx;
+  }
+  out.outside = at.outside;
+}
+
 void SplineGrid::eval(double x, double y, RowCache& cache, Sample& out) const {
   if (y_.nodes == 1) {
     eval(x, y, out);

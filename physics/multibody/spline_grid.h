@@ -49,6 +49,24 @@ class SplineGrid {
   // Every component at (x, y); y is ignored for one coordinate. No allocation.
   void eval(double x, double y, Sample& out) const;
 
+  // One coordinate (dimensions() == 1) along x: where x is on the axis (its
+  // cell and the cubic's weights there), which serves every grid on an equal
+  // axis (sameAxisX), and every component's value and first and second
+  // derivatives there. The same numbers as eval's, without the y terms.
+  struct CurvePoint {
+    int cell = 0;
+    double ex = 0;         // x beyond the grid
+    bool outside = false;
+    std::array<double, 4> w0{}, w1{}, w2{};  // value, slope, curvature weights of the cell's nodes
+  };
+  struct Curve {
+    std::array<double, kMaxComponents> f{}, df{}, ddf{};
+    bool outside = false;
+  };
+  CurvePoint curvePoint(double x) const;
+  void evalCurve(const CurvePoint& at, Curve& out) const;
+  bool sameAxisX(const SplineGrid& o) const { return x_.start == o.x_.start && x_.step == o.x_.step && x_.nodes == o.x_.nodes; }
+
   // The same for many x at one y (a closed-form car's table over travel
   // and rack at one step's rack travel): the cell's nodes contracted along
   // y once and kept in the cache while x stays in that cell and y is the

@@ -48,6 +48,12 @@ bool FidelityPolicy::levelAhead(double first, double last, const Point& point) c
   return true;
 }
 
+double FidelityPolicy::peakFriction(int w, double road) const {
+  PeakFriction& p = peak_[w];
+  if (!(road == p.road)) p = {road, tyre::peakFriction(tyres_[w], road)};
+  return p.mu;
+}
+
 void FidelityPolicy::refuse(State& s) {
   s.calm = 0;
   ++s.refused;
@@ -106,8 +112,10 @@ FidelityPolicy::Decision FidelityPolicy::decide(State& s, const Eigen::Vector2d&
       saturated = true;
       continue;
     }
-    const double mu = tyre::peakFriction(tyres_[w], wheels[w].plane.friction);
-    saturated = saturated || pm::hypot(o.acceptedFx, o.acceptedFy) > kSaturation * mu * o.acceptedFz;
+    const double mu = peakFriction(w, wheels[w].plane.friction);
+    // |(Fx, Fy)| beyond the limit, compared squared (no root: this runs every tick).
+    const double limit = kSaturation * mu * o.acceptedFz;
+    saturated = saturated || limit < 0 || o.acceptedFx * o.acceptedFx + o.acceptedFy * o.acceptedFy > limit * limit;
     lowestMu = std::min(lowestMu, mu);
   }
   constexpr double kG = 9.81;

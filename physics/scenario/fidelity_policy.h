@@ -26,6 +26,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -100,6 +101,14 @@ class FidelityPolicy {
   std::array<Eigen::Vector2d, 4> offsets_;
   std::array<tyre::TyreParams, 4> tyres_;
   double lateralLevel_;
+  // Each tyre's peak friction at the last road friction it was asked for
+  // (a function of the two alone: asked every tick, it changes only where
+  // the road's friction does).
+  struct PeakFriction {
+    double road = std::numeric_limits<double>::quiet_NaN(), mu = 0;
+  };
+  double peakFriction(int w, double road) const;
+  mutable std::array<PeakFriction, 4> peak_{};
 };
 
 }  // namespace bdfcar::scenario

@@ -195,32 +195,43 @@ void PlanarCar::updateSteering(double t) {
   rackNow_ = rack;
   steeringValid_ = true;
   const double c = rackNow_.value, cd = rackNow_.rate, cdd = rackNow_.accel;
-  mb::SplineGrid::Sample s;
+  // Every table is over the rack travel; where their axes agree (the same
+  // carrier tables), one lookup of the rack serves them all.
+  const mb::SplineGrid* located = nullptr;
+  mb::SplineGrid::CurvePoint at;
+  auto evalAtRack = [&](const mb::SplineGrid& g, mb::SplineGrid::Curve& s) {
+    if (!located || !located->sameAxisX(g)) {
+      at = g.curvePoint(c);
+      located = &g;
+    }
+    g.evalCurve(at, s);
+  };
+  mb::SplineGrid::Curve s;
   if (steered_) {
     // The moving bodies' inertia at the rack travel, and what their motion
     // relative to the base asks of it: d2/dt2 of their first moment (plus
     // the Coriolis share, per yaw rate), d/dt of their angular momentum.
-    steering_.eval(c, 0.0, s);
+    evalAtRack(steering_, s);
     baseMoment_ = fixedMoment_ + Vec3(s.f[0], s.f[1], 0);
     baseYawInertia_ = fixedYawInertia_ + s.f[2];
     for (int k = 0; k < 2; ++k) {
-      steeringForce_(k) = s.hess[k][0] * cd * cd + s.grad[k][0] * cdd;
-      steeringCoriolis_(k) = 2 * cd * s.grad[k][0];
+      steeringForce_(k) = s.ddf[k] * cd * cd + s.df[k] * cdd;
+      steeringCoriolis_(k) = 2 * cd * s.df[k];
     }
-    steeringYaw_ = s.grad[3][0] * cd * cd + s.f[3] * cdd;
-    steeringYawCoriolis_ = s.grad[2][0] * cd;
+    steeringYaw_ = s.df[3] * cd * cd + s.f[3] * cdd;
+    steeringYawCoriolis_ = s.df[2] * cd;
   }
   for (Wheel& W : wheels_) {
     if (W.table < 0) continue;
-    tables_[W.table].eval(c, 0.0, s);
+    evalAtRack(tables_[W.table], s);
     W.centre = Vec3(s.f[0], s.f[1], s.f[2]);
-    W.centreRate = cd * Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
+    W.centreRate = cd * Vec3(s.df[0], s.df[1], s.df[2]);
     W.axisY = Vec3(s.f[3], s.f[4], s.f[5]).normalized();
     W.steeringSpin = cd * s.f[6];
     // The absolute spin's rate of change from the steering (its share above,
     // and the tilt of the axis under the yaw rate), and the tilt's rate.
-    W.steeringSpinRate = cdd * s.f[6] + cd * cd * s.grad[6][0];
-    W.tiltRate = cd * s.grad[5][0];
+    W.steeringSpinRate = cdd * s.f[6] + cd * cd * s.df[6];
+    W.tiltRate = cd * s.df[5];
   }
 }
 
