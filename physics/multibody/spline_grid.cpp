@@ -45,6 +45,12 @@ HermiteWeights hermite(double u, double h) {
   return w;
 }
 
+// A cubic Hermite patch on one cell: weights w (one row of HermiteWeights)
+// against node a's value and slope, then node b's.
+inline double hermiteSum(const std::array<double, 4>& w, const double* a, const double* b) {
+  return w[0] * a[0] + w[1] * a[1] + w[2] * b[0] + w[3] * b[1];
+}
+
 // Cell index and local coordinate of x, clamped to the grid; ex = distance outside.
 int locate(const GridAxis& a, double x, double& u, double& ex, bool& outside) {
   const double xc = std::clamp(x, a.start, a.end());
@@ -111,9 +117,7 @@ void SplineGrid::eval(double x, double y, Sample& out) const {
     for (int c = 0; c < components_; ++c) {
       const double* a = node(c, i);
       const double* b = node(c, i + 1);
-      const double g = wx.w0[0] * a[0] + wx.w0[1] * a[1] + wx.w0[2] * b[0] + wx.w0[3] * b[1];
-      const double gx = wx.w1[0] * a[0] + wx.w1[1] * a[1] + wx.w1[2] * b[0] + wx.w1[3] * b[1];
-      const double gxx = wx.w2[0] * a[0] + wx.w2[1] * a[1] + wx.w2[2] * b[0] + wx.w2[3] * b[1];
+      const double g = hermiteSum(wx.w0, a, b), gx = hermiteSum(wx.w1, a, b), gxx = hermiteSum(wx.w2, a, b);
       out.f[c] = g + ex * gx;
       out.grad[c] = {gx, 0.0};
       out.hess[c] = {outX ? 0.0 : gxx, 0.0, 0.0};
@@ -170,9 +174,7 @@ void SplineGrid::evalCurve(const CurvePoint& at, Curve& out) const {
   for (int c = 0; c < components_; ++c) {
     const double* a = node(c, at.cell);
     const double* b = node(c, at.cell + 1);
-    const double g = at.w0[0] * a[0] + at.w0[1] * a[1] + at.w0[2] * b[0] + at.w0[3] * b[1];
-    const double gx = at.w1[0] * a[0] + at.w1[1] * a[1] + at.w1[2] * b[0] + at.w1[3] * b[1];
-    const double gxx = at.w2[0] * a[0] + at.w2[1] * a[1] + at.w2[2] * b[0] + at.w2[3] * b[1];
+    const double g = hermiteSum(at.w0, a, b), gx = hermiteSum(at.w1, a, b), gxx = hermiteSum(at.w2, a, b);
     out.f[c] = g + at.ex * gx;
     out.df[c] = gx;
     out.ddf[c] = at.outside ? 0.0 : gxx;
