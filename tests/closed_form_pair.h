@@ -193,7 +193,27 @@ double spinPartsError(Pair<Car>& p, double t, const integ::Vec& q, const integ::
   const integ::Mat restHere = rest(v, parts), restThere = rest(vOther, partsOther);
   const double change = (parts - partsOther).cwiseAbs().maxCoeff();
   EXPECT_GT(change, 100.0) << "the spins moved the force laws' columns by nothing: the case tests nothing";
-  return (restHere - restThere).cwiseAbs().maxCoeff() / change;
+  // The force laws' change of each spin's own row over the whole move to
+  // vOther (ClosedFormCar::fastRowChange: through saturation, not along a
+  // slope) against the whole residual's change of that row less the rest's
+  // (linear in the spin: its column times the move).
+  double rowError = 0;
+  for (int k = 0; k < static_cast<int>(spins.size()); ++k) {
+    const int i = spins[k];
+    const double dv = vOther(i) - v(i);
+    integ::Residual r0, r1;
+    r0.resize(n);
+    r1.resize(n);
+    integ::Vec vk = v;
+    vk(i) += dv;
+    EXPECT_EQ(p.car.residual(t, q, vk, a, lambda, r1, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+    EXPECT_EQ(p.car.residual(t, q, v, a, lambda, r0, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+    double given = 0;
+    EXPECT_TRUE(p.car.fastRowChange(t, k, dv, given));
+    const double whole = r1.F(i) - r0.F(i) - restHere(i, k) * dv;
+    rowError = std::max(rowError, std::abs(given - whole) / std::max(1.0, std::abs(whole)));  // N or N m
+  }
+  return std::max(rowError, (restHere - restThere).cwiseAbs().maxCoeff() / change);
 }
 
 // spinPartsError over states (built by makeState as the accelerations'

@@ -57,6 +57,14 @@ class SaturatingWheel final : public integ::Dae {
     }
   }
 
+  // The spin's own row (kI a + kR F) moves by kR times the slip force's
+  // change when the spin rate moves by dv (Dae::fastRowChange).
+  bool fastRowChange(double t, int k, double dv, double& change) override {
+    if (!parts_ || fast_[k] != 1) return false;
+    change = kR * (slipForce(last_(0), last_(1) + dv, t) - slipForce(last_(0), last_(1), t));
+    return true;
+  }
+
   integ::EvalStatus residual(double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                              integ::Residual& out, bool withConstraints, integ::Message&) override {
     last_ = v;

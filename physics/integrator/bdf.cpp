@@ -318,6 +318,63 @@ bool BdfIntegrator::updateFastColumns(double hp) {
   return true;
 }
 
+// Each fast coordinate's correction with its own equation solved in that
+// coordinate alone, the rest of the correction held. Row i of the linear
+// step reads K_ii (x - dq_i) = 0 around the linear correction dq_i, with
+// K_ii = F_a + h' F_v + h'^2 F_q on the diagonal, whose F_v holds the fast
+// part P (the force laws' slope, dF/dv at the Jacobian or the last refresh).
+// In the velocity change y = (x + rhoQ_i) / h' that x makes, with y0 the
+// linear one, the row with the force laws' exact change N(y) in place of
+// their slope is
+//   e(y) = s (y - y0) + N(y) - P y0,   s = K_ii / h' - P,
+// increasing in y (s > 0: the wheel's inertia over h'; N increasing: a tyre
+// and a brake resist their spin), e(0) = -(s + P) y0 since N(0) = 0. Its
+// root by the secant method from (0, e(0)) and (y0, e(y0)), Illinois' once
+// bracketed: a few force-law evaluations per coordinate, no residual.
+void BdfIntegrator::solveFastRows(double t, double hp) {
+  constexpr int kMaxEvaluations = 5;
+  constexpr double kTolerance = 1e-2;  // of the Newton correction's tolerance (correctionNorm)
+  const std::vector<int>& fast = dae_.fastColumns();
+  for (int k = 0; k < static_cast<int>(fast.size()); ++k) {
+    const int i = fast[k];
+    const double P = dx_.Fv(i, i) - slowFv_(i, k);
+    const double s = (Fa_(i, i) + hp * dx_.Fv(i, i) + hp * hp * dx_.Fq(i, i)) / hp - P;
+    if (!(s > 0)) continue;
+    const double y0 = (dq_(i) + rhoQ_(i)) / hp;
+    const double tol = kTolerance * (opt_.atol + opt_.rtol * std::abs(d_(i))) / hp;
+    auto rowAt = [&](double y, double& e) {
+      double n = 0;
+      if (!dae_.fastRowChange(t, k, y, n)) return false;
+      e = s * (y - y0) + n - P * y0;
+      return std::isfinite(e);
+    };
+    double y1 = 0, e1 = -(s + P) * y0, y2 = y0, e2 = 0;
+    if (!(std::abs(y0) > tol) || !rowAt(y2, e2)) continue;
+    double y = y2;
+    for (int it = 1; it < kMaxEvaluations && e2 != 0 && e2 != e1; ++it) {
+      const double y3 = y2 - e2 * (y2 - y1) / (e2 - e1);
+      if (!std::isfinite(y3)) break;
+      if (std::abs(y3 - y2) <= tol) {
+        y = y3;
+        break;
+      }
+      double e3 = 0;
+      if (!rowAt(y3, e3)) break;
+      y = y3;
+      const bool bracketed = (e1 < 0) != (e2 < 0);
+      if (!bracketed || (e3 < 0) != (e2 < 0)) {
+        y1 = y2;
+        e1 = e2;
+      } else {
+        e1 *= 0.5;  // Illinois: the end that stays is weighed down
+      }
+      y2 = y3;
+      e2 = e3;
+    }
+    dq_(i) = hp * y - rhoQ_(i);
+  }
+}
+
 // x -= Z (I + E^T Z)^-1 E^T x: the Woodbury correction of x = A^-1 b.
 void BdfIntegrator::applyLowRankUpdate(Vec& x, int rows) {
   if (!lowRank_) return;
@@ -342,8 +399,9 @@ double BdfIntegrator::correctionNorm() const {
 // Newton iterations from the current iterate: `iterations` of them, or up to
 // maxNewtonIterations until the correction is within tolerance.
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
-                                                   bool toTolerance, StepReport& rep, bool refreshFast) {
+                                                   bool toTolerance, StepReport& rep, bool refreshFast, bool solveRows) {
   bool refreshNow = refreshFast;
+  solveRows = solveRows && fastParts_ && opt_.fastRowSolve;
   const int nv = n_.nv, nc = n_.nc;
   const double hp = c.hPrime, cj = 1.0 / hp;
   int maxIt = toTolerance ? opt_.maxNewtonIterations : iterations;
@@ -379,6 +437,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     applyLowRankUpdate(sol_, nv + nc);
     dq_ = sol_.head(nv);
     dlam_ = sol_.tail(nc) / (hp * hp);
+    if (solveRows) solveFastRows(t, hp);
     // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
     // K*-orthogonal correction that restores the linearised velocity
     // constraint Phi_q v + Phi_t + (Phi_q v)_q dq + Phi_q dv = 0.
@@ -475,7 +534,8 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
     a0_ = a_;
     lam0_ = lam_;
     // The fast columns are refreshed inside the iteration, from its residual.
-    const NewtonOutcome one = newton(t, c, 1, false, rep, scope == JacobianScope::FastColumns);
+    const bool fastScope = scope == JacobianScope::FastColumns;
+    const NewtonOutcome one = newton(t, c, 1, false, rep, fastScope, fastScope);
     if (one == NewtonOutcome::Failed) return one;
     // Damping: a correction larger than the last one is halved (up to 4 times).
     for (int halving = 0; halving < 4 && rep.correction > prev && prev > 1.0; ++halving) {

@@ -58,6 +58,15 @@ struct BdfOptions {
   // columns (Dae::fastColumns) before the whole Jacobian.
   bool chordContinuation = true;
   bool fastColumnRescue = true;
+  // In that rescue's full Newton, each fast coordinate's own equation
+  // solved in that coordinate, nonlinearly (Dae::fastRowChange), after each
+  // linear correction: a tyre's force saturates within one correction, where
+  // the linear one overshoots and Newton cycles (a rough road's loads swing
+  // the tyres in and out of saturation step to step). Only there: in the
+  // fixed count it would let a rescue end on the fixed count's acceptance
+  // further from the solution, and on smooth ground it costs a tyre
+  // evaluation per wheel and iteration for nothing.
+  bool fastRowSolve = true;
   // The factorized matrices of the last few h' kept since the Jacobian (off:
   // an LU and inverse at every change of h').
   bool keepFactorizations = true;
@@ -131,14 +140,16 @@ class BdfIntegrator final : public Integrator {
   bool updateFastColumns(double hPrime);
   // base: the residual at the iterate (the Newton iteration's own).
   EvalStatus refreshFastColumns(double t, double hPrime, const Residual& base, Message& msg);
+  void solveFastRows(double t, double hPrime);
   // x = A^-1 b for the factorized A -> the refreshed matrix's solution, in its
   // first `rows` rows (the velocity solves use only the first nv).
   void applyLowRankUpdate(Vec& x, int rows);
   void startFromPredictor();
   enum class NewtonOutcome { Converged, NotContracting, Failed };
   // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.
+  // solveRows: each correction's fast coordinates by solveFastRows (the fast-column rescue's full Newton).
   NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep,
-                       bool refreshFast = false);
+                       bool refreshFast = false, bool solveRows = false);
   enum class JacobianScope { FastColumns, Whole };
   NewtonOutcome fullNewton(double t, const BdfCoefficients& c, JacobianScope scope, StepReport& rep);
   NewtonOutcome recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort, StepReport& rep);

@@ -116,6 +116,14 @@ class Dae {
   // takes a residual per column (finite differences).
   virtual bool hasFastColumnParts() const { return false; }
   virtual void fastColumnParts(double /*t*/, Mat& /*parts*/) {}
+  // The same force laws' change, not their slope: how far the fast
+  // coordinate fastColumns()[k]'s own equation (that row of F) moves when
+  // its velocity moves by dv from the state of the last residual
+  // evaluation, the rest held (exact for that dv, where fastColumnParts is
+  // the slope at 0). What Newton needs to solve that row in its own
+  // coordinate (BdfOptions::fastRowSolve): a saturating tyre makes it far
+  // from linear within one correction. False: not given.
+  virtual bool fastRowChange(double /*t*/, int /*k*/, double /*dv*/, double& /*change*/) { return false; }
 
   // Optional analytic blocks; return false to get finite differences.
   virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }

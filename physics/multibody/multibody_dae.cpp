@@ -113,6 +113,14 @@ void MultibodyDae::fastColumnParts(double t, integ::Mat& parts) {
     if (p->hasFastColumnParts()) p->addFastColumnParts(model_, data_, t, fastColumns_, parts);
 }
 
+bool MultibodyDae::fastRowChange(double t, int k, double dv, double& change) {
+  change = 0;
+  bool given = false;
+  for (ForceProvider* p : providers_)
+    if (p->hasFastColumnParts()) given = p->addFastRowChange(model_, data_, t, fastColumns_[k], dv, change) || given;
+  return given;
+}
+
 bool MultibodyDae::massMatrix(double /*t*/, const integ::Vec& q, integ::Mat& Fa) {
   updatePositions(model_, q, data_);
   mb::massMatrix(model_, data_, Fa);

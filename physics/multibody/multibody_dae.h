@@ -35,6 +35,13 @@ class ForceProvider {
   virtual bool hasFastColumnParts() const { return false; }
   virtual void addFastColumnParts(const Model& /*model*/, const Data& /*data*/, double /*t*/,
                                   const std::vector<int>& /*columns*/, Eigen::MatrixXd& /*parts*/) {}
+  // Those forces' change of the equation of velocity coordinate `column`
+  // when that velocity moves by dv from the state of the last apply()
+  // (integ::Dae::fastRowChange), added to change. False: none given.
+  virtual bool addFastRowChange(const Model& /*model*/, const Data& /*data*/, double /*t*/, int /*column*/,
+                                double /*dv*/, double& /*change*/) {
+    return false;
+  }
 };
 
 struct StateLimits {
@@ -72,6 +79,7 @@ class MultibodyDae final : public integ::Dae {
   bool constraintJacobian(double t, const integ::Vec& q, integ::Mat& Phi_q) override;
   bool hasFastColumnParts() const override;
   void fastColumnParts(double t, integ::Mat& parts) override;
+  bool fastRowChange(double t, int k, double dv, double& change) override;
 
  private:
   void applyForces(double t);

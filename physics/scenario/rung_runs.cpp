@@ -50,7 +50,7 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
   k << '|' << static_cast<int>(i.method) << ' ' << i.step << ' ' << scene.tick << ' ' << b.order << ' '
     << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
     << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
-    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
+    << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << b.fastRowSolve << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
     << ' ' << b.refineDepth << ' ' << b.keepFactorizations << ' '
     << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm << ' '
     << scene.fidelity.newtonIterations << ' ' << scene.fidelity.stopWithinTolerance;

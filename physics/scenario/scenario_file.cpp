@@ -381,6 +381,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     b.rtol = it->number("rtol", Dimension::None, Range{0.0, 1.0, false, false}, b.rtol);
     b.refineError = it->number("refine_error", Dimension::None, Range{0.0, 1.0, false, false}, b.refineError);  // 0: off
     b.refineDepth = static_cast<int>(it->integerIn("refine_depth", 0, 6, b.refineDepth));
+    b.fastRowSolve = it->boolean("fast_row_solve", b.fastRowSolve);
     it->finish();
   }
   // A CSV file's default columns are the telemetry's (a run's telemetry replays).

@@ -43,28 +43,46 @@ void ClosedFormCar::fastColumnParts(double t, integ::Mat& parts) {
   const int m = static_cast<int>(fastColumns_.size());
   parts.setZero(n_, m);
   const double h = forces_.sinceAccepted(t);
-  const bool driveline = engineV() >= 0;
-  const VehicleForces::DrivelineTorques T0 =
-      driveline ? forces_.drivelineAt(engineSpeed_, relativeSpin_, h) : VehicleForces::DrivelineTorques{};
+  const VehicleForces::DrivelineTorques T0 = drivelineNow(h);
   for (int c = 0; c < m; ++c) {
     const int w = c;  // fastColumns_: the spins in wheel order
-    auto col = parts.col(c);
-    const double sign = spinSign(w), dv = VehicleForces::spinIncrement(kinematics_[w].spinRate);
-    tyre::WheelKinematics k = kinematics_[w];
-    k.spinRate += sign * dv;  // the joint rate moves the wheel's spin about its y by sign
-    addTyreForces(w, forces_.tyreAt(w, k, h), 1.0 / dv, col);
-    addTyreForces(w, forces_.outputs()[w].out, -1.0 / dv, col);
-    const double spin = relativeSpin_[w];
-    col(spinV(w)) -= sign * (forces_.brakeTorque(w, spin + sign * dv, h) - forces_.brakeTorque(w, spin, h)) / dv;
-    if (!driveline) continue;
-    const std::vector<int>& driven = forces_.drivenWheels();
-    if (std::find(driven.begin(), driven.end(), w) == driven.end()) continue;
-    std::array<double, 4> moved = relativeSpin_;
-    moved[w] += sign * dv;
-    const VehicleForces::DrivelineTorques T1 = forces_.drivelineAt(engineSpeed_, moved, h);
-    col(engineV()) -= ((T1.engine - T1.clutch) - (T0.engine - T0.clutch)) / dv;
-    for (int u : driven) addDriveTorque(u, (T1.drive[u] - T0.drive[u]) / dv, col);
+    const double dv = VehicleForces::spinIncrement(kinematics_[w].spinRate);
+    addSpinChange(w, dv, dv, h, T0, parts.col(c));
   }
+}
+
+bool ClosedFormCar::fastRowChange(double t, int k, double dv, double& change) {
+  const double h = forces_.sinceAccepted(t);
+  rowScratch_.setZero(n_);
+  addSpinChange(k, dv, 1.0, h, drivelineNow(h), rowScratch_);
+  change = rowScratch_(fastColumns_[k]);
+  return true;
+}
+
+VehicleForces::DrivelineTorques ClosedFormCar::drivelineNow(double h) const {
+  return engineV() >= 0 ? forces_.drivelineAt(engineSpeed_, relativeSpin_, h) : VehicleForces::DrivelineTorques{};
+}
+
+// The change of F by wheel w's tyre, brake and driveline when its spin's
+// joint rate moves by dv, divided by per (dv: the column's slope; 1: the
+// change itself).
+void ClosedFormCar::addSpinChange(int w, double dv, double per, double h, const VehicleForces::DrivelineTorques& T0,
+                                  Eigen::Ref<integ::Vec> col) const {
+  const double sign = spinSign(w);
+  tyre::WheelKinematics k = kinematics_[w];
+  k.spinRate += sign * dv;  // the joint rate moves the wheel's spin about its y by sign
+  addTyreForces(w, forces_.tyreAt(w, k, h), 1.0 / per, col);
+  addTyreForces(w, forces_.outputs()[w].out, -1.0 / per, col);
+  const double spin = relativeSpin_[w];
+  col(spinV(w)) -= sign * (forces_.brakeTorque(w, spin + sign * dv, h) - forces_.brakeTorque(w, spin, h)) / per;
+  if (engineV() < 0) return;
+  const std::vector<int>& driven = forces_.drivenWheels();
+  if (std::find(driven.begin(), driven.end(), w) == driven.end()) return;
+  std::array<double, 4> moved = relativeSpin_;
+  moved[w] += sign * dv;
+  const VehicleForces::DrivelineTorques T1 = forces_.drivelineAt(engineSpeed_, moved, h);
+  col(engineV()) -= ((T1.engine - T1.clutch) - (T0.engine - T0.clutch)) / per;
+  for (int u : driven) addDriveTorque(u, (T1.drive[u] - T0.drive[u]) / per, col);
 }
 
 const pm::SinCos& ClosedFormCar::baseHeading(double yaw) const {

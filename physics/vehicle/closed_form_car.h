@@ -70,6 +70,7 @@ class ClosedFormCar : public integ::Dae {
   // evaluations, not four residuals.
   bool hasFastColumnParts() const override { return true; }
   void fastColumnParts(double t, integ::Mat& parts) override;
+  bool fastRowChange(double t, int k, double dv, double& change) override;
   // The chassis' joint (its first coordinates), then plain vector coordinates.
   void retract(const integ::Vec& q, const integ::Vec& dq, integ::Vec& out) const override;
   void localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const override;
@@ -134,6 +135,12 @@ class ClosedFormCar : public integ::Dae {
   std::array<tyre::WheelKinematics, 4> kinematics_;
   std::array<double, 4> relativeSpin_{};
   double engineSpeed_ = 0;  // a powertrain's crank rate relative to the chassis, at the last residual
+
+ private:
+  VehicleForces::DrivelineTorques drivelineNow(double h) const;
+  void addSpinChange(int w, double dv, double per, double h, const VehicleForces::DrivelineTorques& T0,
+                     Eigen::Ref<integ::Vec> col) const;
+  integ::Vec rowScratch_;  // fastRowChange's column
 
  private:
   // The sine and cosine of a planar base's heading at the last base angle

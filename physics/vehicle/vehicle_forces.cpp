@@ -215,47 +215,70 @@ const tyre::ContactPlane& VehicleForces::latestGround(int w) const {
 // alone (the spin moves the spindle alone: its motion subspace S), the
 // tyre's wrench change taken to the joints along the path to the root. The
 // tyre's and brake's inputs are those of the last apply(), as are outputs_.
+VehicleForces::SpinPoint VehicleForces::spinPoint(const mb::Data& d, double t) const {
+  SpinPoint p;
+  p.h = sinceAccepted(t);
+  for (int w = 0; w < 4; ++w) {
+    p.ks[w] = wheelKinematics(d, w);
+    if (vehicle_.planar) planarWheelAttitude(d, w, p.ks[w]);
+    p.spins[w] = relativeSpin(d, w);
+  }
+  p.driveline = vehicle_.spec.powertrain.has_value();
+  p.engine = p.driveline ? engineSpeed(d) : 0.0;
+  if (p.driveline) p.T0 = drivelineAt(p.engine, p.spins, p.h);
+  return p;
+}
+
+// The change of F (a residual's, F = M a - Q) by wheel w's tyre, brake and
+// driveline when its spin's joint rate moves by dv, divided by per (dv: the
+// column's slope; 1: the change itself).
+void VehicleForces::addSpinChange(const mb::Model& model, const mb::Data& d, const SpinPoint& p, int w, double dv,
+                                  double per, Eigen::Ref<Eigen::VectorXd> part) const {
+  const WheelLayout& wl = vehicle_.layout.wheels[w];
+  const mb::Vec6 s = d.S.col(wl.spinV);  // the spindle's body-frame motion per unit joint rate
+  tyre::WheelKinematics k = p.ks[w];
+  k.centreVelocity += d.R[wl.spindle] * (dv * s.head<3>());
+  k.spinRate += dv * s(4);  // about the spindle's y
+  const tyre::TyreOutput& base = outputs_[w].out;
+  const tyre::TyreOutput moved = tyreAt(w, k, p.h);
+  mb::Vec6 df = mb::Vec6::Zero();
+  if (moved.inContact) df += mb::bodyWrench(d, wl.spindle, moved.point, moved.force, moved.moment);
+  if (base.inContact) df -= mb::bodyWrench(d, wl.spindle, base.point, base.force, base.moment);
+  // F = tau - jointForce, and tau holds -S^T X^T fext.
+  mb::addPathJointForces(model, d, wl.spindle, df, -1.0 / per, part);
+  const double spin = p.spins[w];
+  part(wl.spinV) -= wl.spinSign * (brakeTorque(w, spin + dv * s(4), p.h) - brakeTorque(w, spin, p.h)) / per;
+  // A driven wheel's spin moves the differential's output speed and the
+  // clutch's slip: every driven wheel's drive torque and the crank's.
+  if (!p.driveline || std::find(driven_.begin(), driven_.end(), w) == driven_.end()) return;
+  std::array<double, 4> movedSpins = p.spins;
+  movedSpins[w] += dv * s(4);
+  const DrivelineTorques T1 = drivelineAt(p.engine, movedSpins, p.h);
+  part(vehicle_.layout.engineV) -= ((T1.engine - T1.clutch) - (p.T0.engine - p.T0.clutch)) / per;
+  for (int u : driven_) addDriveTorqueColumn(model, d, u, p.ks[u], (T1.drive[u] - p.T0.drive[u]) / per, part);
+}
+
 void VehicleForces::addFastColumnParts(const mb::Model& model, const mb::Data& d, double t,
                                        const std::vector<int>& columns, Eigen::MatrixXd& parts) {
-  const double h = sinceAccepted(t);
-  std::array<tyre::WheelKinematics, 4> ks;
-  std::array<double, 4> spins;
+  const SpinPoint p = spinPoint(d, t);
   for (int w = 0; w < 4; ++w) {
-    ks[w] = wheelKinematics(d, w);
-    if (vehicle_.planar) planarWheelAttitude(d, w, ks[w]);
-    spins[w] = relativeSpin(d, w);
-  }
-  const bool driveline = vehicle_.spec.powertrain.has_value();
-  const double engine = driveline ? engineSpeed(d) : 0.0;
-  const DrivelineTorques T0 = driveline ? drivelineAt(engine, spins, h) : DrivelineTorques{};
-  for (int w = 0; w < 4; ++w) {
-    const WheelLayout& wl = vehicle_.layout.wheels[w];
-    const auto col = std::find(columns.begin(), columns.end(), wl.spinV);
+    const auto col = std::find(columns.begin(), columns.end(), vehicle_.layout.wheels[w].spinV);
     if (col == columns.end()) continue;
-    auto part = parts.col(static_cast<int>(col - columns.begin()));
-    const mb::Vec6 s = d.S.col(wl.spinV);  // the spindle's body-frame motion per unit joint rate
-    tyre::WheelKinematics k = ks[w];
-    const double dv = spinIncrement(k.spinRate);
-    k.centreVelocity += d.R[wl.spindle] * (dv * s.head<3>());
-    k.spinRate += dv * s(4);  // about the spindle's y
-    const tyre::TyreOutput& base = outputs_[w].out;
-    const tyre::TyreOutput moved = tyreAt(w, k, h);
-    mb::Vec6 df = mb::Vec6::Zero();
-    if (moved.inContact) df += mb::bodyWrench(d, wl.spindle, moved.point, moved.force, moved.moment);
-    if (base.inContact) df -= mb::bodyWrench(d, wl.spindle, base.point, base.force, base.moment);
-    // F = tau - jointForce, and tau holds -S^T X^T fext.
-    mb::addPathJointForces(model, d, wl.spindle, df, -1.0 / dv, part);
-    const double spin = spins[w];
-    part(wl.spinV) -= wl.spinSign * (brakeTorque(w, spin + dv * s(4), h) - brakeTorque(w, spin, h)) / dv;
-    // A driven wheel's spin moves the differential's output speed and the
-    // clutch's slip: every driven wheel's drive torque and the crank's.
-    if (!driveline || std::find(driven_.begin(), driven_.end(), w) == driven_.end()) continue;
-    std::array<double, 4> movedSpins = spins;
-    movedSpins[w] += dv * s(4);
-    const DrivelineTorques T1 = drivelineAt(engine, movedSpins, h);
-    part(vehicle_.layout.engineV) -= ((T1.engine - T1.clutch) - (T0.engine - T0.clutch)) / dv;
-    for (int u : driven_) addDriveTorqueColumn(model, d, u, ks[u], (T1.drive[u] - T0.drive[u]) / dv, part);
+    const double dv = spinIncrement(p.ks[w].spinRate);
+    addSpinChange(model, d, p, w, dv, dv, parts.col(static_cast<int>(col - columns.begin())));
   }
+}
+
+bool VehicleForces::addFastRowChange(const mb::Model& model, const mb::Data& d, double t, int column, double dv,
+                                     double& change) {
+  for (int w = 0; w < 4; ++w) {
+    if (vehicle_.layout.wheels[w].spinV != column) continue;
+    rowScratch_.setZero(model.nv);
+    addSpinChange(model, d, spinPoint(d, t), w, dv, 1.0, rowScratch_);
+    change += rowScratch_(column);
+    return true;
+  }
+  return false;
 }
 
 tyre::TyreOutput VehicleForces::tyreAt(int w, const tyre::WheelKinematics& k, double h) const {

@@ -105,6 +105,8 @@ class VehicleForces final : public mb::ForceProvider {
   bool hasFastColumnParts() const override { return true; }
   void addFastColumnParts(const mb::Model& model, const mb::Data& data, double t, const std::vector<int>& columns,
                           Eigen::MatrixXd& parts) override;
+  bool addFastRowChange(const mb::Model& model, const mb::Data& data, double t, int column, double dv,
+                        double& change) override;
 
   // The force laws of one wheel from its kinematics alone, for a model that
   // is not an mb::Model (the closed-form planar car, planar_car.h); apply()
@@ -216,6 +218,18 @@ class VehicleForces final : public mb::ForceProvider {
   void addDriveTorqueColumn(const mb::Model& model, const mb::Data& data, int wheel, const tyre::WheelKinematics& k,
                             double scale, Eigen::Ref<Eigen::VectorXd> out) const;
   void aerodynamics(mb::Data& data) const;
+  // The wheels where the last apply() took them, for their spins' columns.
+  struct SpinPoint {
+    std::array<tyre::WheelKinematics, 4> ks;
+    std::array<double, 4> spins{};
+    bool driveline = false;
+    double engine = 0, h = 0;
+    DrivelineTorques T0;
+  };
+  SpinPoint spinPoint(const mb::Data& data, double t) const;
+  void addSpinChange(const mb::Model& model, const mb::Data& data, const SpinPoint& p, int w, double dv, double per,
+                     Eigen::Ref<Eigen::VectorXd> part) const;
+  Eigen::VectorXd rowScratch_;  // addFastRowChange's column
   std::optional<double> modelLoad(int w) const {
     return vehicle_.planar ? std::optional<double>(outputs_[w].modelLoad) : std::nullopt;
   }
