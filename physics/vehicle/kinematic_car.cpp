@@ -1,6 +1,8 @@
 #include "vehicle/kinematic_car.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -140,24 +142,47 @@ void KinematicCar::updateSteering(double t) {
 // The table at (travel, rack): R = rest Rz(psi) Rx(phi) Ry(theta), the
 // carrier's angular velocity in its own axes E(phi, theta) a_dot, and the
 // derivatives of both over the table's coordinates (as mb's tabulated joint).
-void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerMotion& out, bool withRates) const {
+const KinematicCar::CornerPose& KinematicCar::cornerPose(int w, double travel) const {
   const Corner& C = corners_[w];
-  mb::SplineGrid::Sample s;
-  C.table->eval(travel, C.steered ? rackNow_.value : 0.0, rows_[w], s);
+  const double rack = C.steered ? rackNow_.value : 0.0;
+  CornerPose& P = poses_[w];
+  const auto travelBits = std::bit_cast<std::uint64_t>(travel), rackBits = std::bit_cast<std::uint64_t>(rack);
+  if (P.valid && P.travelBits == travelBits && P.rackBits == rackBits) return P;
+  mb::SplineGrid::Sample& s = P.s;
+  C.table->eval(travel, rack, rows_[w], s);
   const pm::SinCos p = pm::sincos(s.f[3]), f = pm::sincos(s.f[4]), th = pm::sincos(s.f[5]);
   Mat3 M;  // Rz(psi) Rx(phi) Ry(theta)
   M << p.c * th.c - p.s * f.s * th.s, -p.s * f.c, p.c * th.s + p.s * f.s * th.c,  //
       p.s * th.c + p.c * f.s * th.s, p.c * f.c, p.s * th.s - p.c * f.s * th.c,    //
       -f.c * th.s, f.s, f.c * th.c;
-  out.R.noalias() = C.rest * M;
-  out.t = Vec3(s.f[0], s.f[1], s.f[2]);
+  P.R.noalias() = C.rest * M;
+  P.t = Vec3(s.f[0], s.f[1], s.f[2]);
   Mat3 E;
   E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
   const Vec3 da0(s.grad[3][0], s.grad[4][0], s.grad[5][0]);
-  const Vec3 w0 = E * da0;
-  out.ts = Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
+  P.w0 = E * da0;
+  P.ts = Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
+  P.phi = f;
+  P.theta = th;
+  P.travelBits = travelBits;
+  P.rackBits = rackBits;
+  P.valid = true;
+  return P;
+}
+
+void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerMotion& out, bool withRates) const {
+  const Corner& C = corners_[w];
+  const CornerPose& P = cornerPose(w, travel);
+  const mb::SplineGrid::Sample& s = P.s;
+  const pm::SinCos &f = P.phi, &th = P.theta;
+  out.R = P.R;
+  out.t = P.t;
+  out.ts = P.ts;
+  const Vec3& w0 = P.w0;
   out.ws.noalias() = out.R * w0;
   if (!withRates) return;
+  Mat3 E;
+  E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
   const int nv = C.steered ? 2 : 1;
   const double rates[2] = {travelRate, C.steered ? rackNow_.rate : 0.0};
   // dE/dphi has one non-zero column (the first), dE/dtheta two (the first two).

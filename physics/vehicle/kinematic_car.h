@@ -30,6 +30,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "vehicle/closed_form_car.h"
@@ -93,6 +94,20 @@ class KinematicCar final : public ClosedFormCar {
   };
   // withRates false: the pose and the partials alone (positions only).
   void cornerMotion(int w, double travel, double travelRate, CornerMotion& m, bool withRates) const;
+  // A corner's table at a travel and rack travel, the angles' sines and
+  // cosines and the pose from them: a pure function of the two, kept for the
+  // last pair (the step's first residual is at the travel beginStep took;
+  // a finite-difference Jacobian moves one corner's travel in 4 of its 31
+  // residuals).
+  struct CornerPose {
+    std::uint64_t travelBits = 0, rackBits = 0;
+    bool valid = false;
+    mb::SplineGrid::Sample s;
+    pm::SinCos phi, theta;  // of the roll and pitch angles (the rates need them)
+    Mat3 R;
+    Vec3 t, ts, w0;
+  };
+  const CornerPose& cornerPose(int w, double travel) const;
   void updateSteering(double t);
 
   Vec3 gravity_;
@@ -117,6 +132,7 @@ class KinematicCar final : public ClosedFormCar {
   // rack travel (SplineGrid::RowCache): the residuals of a step evaluate it
   // along the travel alone.
   mutable std::array<mb::SplineGrid::RowCache, 4> rows_;
+  mutable std::array<CornerPose, 4> poses_;
   // The rack at the step's time.
   double steeringTime_;
   mb::SignalValue rackNow_;
