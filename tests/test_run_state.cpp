@@ -4,12 +4,14 @@
 // divergence in a rewindable run goes back to the last good snapshot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "scenario/run.h"
 #include "scenario/simulation.h"
@@ -327,4 +329,28 @@ TEST(Telemetry, EveryColumnIsDocumented) {
   for (std::string column; std::getline(header, column, ','); ++columns)
     EXPECT_TRUE(documented.count(column)) << "column '" << column << "' is not in docs/TELEMETRY.md";
   EXPECT_GE(columns, 50);
+}
+
+// The per-step cost's ranks by selection against the sorted list they are
+// defined on (a second algorithm): odd and even lengths, ties, one step.
+TEST(StepCost, RanksBySelectionAreTheSortedListsRanks) {
+  std::vector<std::vector<float>> cases = {{3e-6f}, {2e-6f, 1e-6f}, {5e-6f, 5e-6f, 1e-6f, 9e-6f, 5e-6f}};
+  std::vector<float> many;
+  unsigned state = 12345;
+  for (int i = 0; i < 1001; ++i) {
+    state = state * 1103515245u + 12345u;
+    many.push_back(1e-6f * static_cast<float>((state >> 16) % 97));  // ties by the dozen
+  }
+  cases.push_back(many);
+  many.pop_back();
+  cases.push_back(many);
+  for (const std::vector<float>& c : cases) {
+    std::vector<float> sorted = c;
+    std::sort(sorted.begin(), sorted.end());
+    auto at = [&](double q) { return 1e6 * sorted[std::min(sorted.size() - 1, static_cast<size_t>(q * (sorted.size() - 1) + 0.5))]; };
+    const scenario::StepCost cost = scenario::stepCost(c);
+    EXPECT_EQ(cost.p50, at(0.5)) << c.size() << " steps";
+    EXPECT_EQ(cost.p99, at(0.99)) << c.size() << " steps";
+    EXPECT_EQ(cost.max, 1e6 * sorted.back()) << c.size() << " steps";
+  }
 }

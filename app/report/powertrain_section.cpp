@@ -66,7 +66,8 @@ void provingGroundLap(std::ostream& md, int repeats) {
   scenario::ScenarioSpec full = spec;
   full.fidelity.automatic = false;
   full.fidelity.suspension = vehicle::Fidelity::Linkage;
-  const RunSummary scene = runRepeated(spec, repeats), linkage = runRepeated(full, repeats);
+  const PairedSummary paired = runPaired(spec, full, repeats);
+  const RunSummary &scene = paired.a, &linkage = paired.b;
   if (!scene.result.ok || !linkage.result.ok) {
     md << "The proving-ground lap failed: " << (scene.result.ok ? linkage.result.failure : scene.result.failure)
        << "\n\n";
@@ -84,8 +85,8 @@ void provingGroundLap(std::ostream& md, int repeats) {
      << a.stepsPerModel[2] << " (" << a.fidelitySwitches << " switches: the kinematic model where the road "
      << "ahead has curbs). Median over " << repeats << " runs of the wall time per step (no telemetry): "
      << fmt("%.1f", scene.wallPerStepUs) << " us, against " << fmt("%.1f", linkage.wallPerStepUs)
-     << " us for the same lap on the linkage throughout (ratio "
-     << fmt("%.2f", scene.wallPerStepUs / linkage.wallPerStepUs) << "); per step p50 / p99 / max (each the median of the runs' own) "
+     << " us for the same lap on the linkage throughout, the two run in turn (ratio, the median of the "
+     << repeats << " pairs' own: " << fmt("%.2f", paired.ratio) << "); per step p50 / p99 / max (each the median of the runs' own) "
      << fmt("%.1f", ca.p50) << " / " << fmt("%.1f", ca.p99) << " / " << fmt("%.0f", ca.max) << " us (linkage "
      << fmt("%.1f", cl.p50) << " / " << fmt("%.1f", cl.p99) << " / " << fmt("%.0f", cl.max) << " us). The "
      << "scene's lap against the linkage's: yaw rate " << fmt("%.2f", yaw.rmsPercent) << " %, lateral "

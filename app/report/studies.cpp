@@ -63,37 +63,77 @@ std::vector<std::string> hardCaseFiles() {
   return files;
 }
 
-RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
-  RunSummary s;
+namespace {
+
+// One timed run: no samples (a telemetry row costs about a residual
+// evaluation, sampleVehicle, which would hide what the model costs).
+struct TimedRun {
+  bool ok = false;
+  double perStepUs = 0;
+  scenario::StepCost cost;
+};
+TimedRun timedRun(const scenario::ScenarioSpec& spec) {
+  scenario::Simulation sim(spec);
+  scenario::RunOptions o;
+  o.sample = false;
+  o.keepSamples = false;
+  const scenario::RunResult timed = scenario::runScenario(sim, o);
+  return {timed.ok, 1e6 * timed.wallSeconds / std::max(1L, timed.steps), scenario::stepCost(timed.stepSeconds)};
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The medians of timed runs into a summary, and its sampled run.
+struct Timings {
   std::vector<double> perStep, p50, p99, max;
-  // The timed runs sample nothing: a telemetry row costs about a residual
-  // evaluation (sampleVehicle), which would hide what the model costs.
+  void add(const TimedRun& t) {
+    perStep.push_back(t.perStepUs);
+    p50.push_back(t.cost.p50);
+    p99.push_back(t.cost.p99);
+    max.push_back(t.cost.max);
+  }
+  RunSummary summary(const scenario::ScenarioSpec& spec) const {
+    RunSummary s;
+    {
+      scenario::Simulation sim(spec);
+      s.result = scenario::runScenario(sim, scenario::RunOptions{});
+    }
+    if (!perStep.empty()) {
+      s.wallPerStepUs = median(perStep);
+      s.stepCost = {median(p50), median(p99), median(max)};
+    }
+    return s;
+  }
+};
+
+}  // namespace
+
+RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats) {
+  Timings t;
   for (int i = 0; i < repeats; ++i) {
-    scenario::Simulation sim(spec);
-    scenario::RunOptions o;
-    o.sample = false;
-    o.keepSamples = false;
-    const scenario::RunResult timed = scenario::runScenario(sim, o);
-    if (!timed.ok) break;
-    perStep.push_back(1e6 * timed.wallSeconds / std::max(1L, timed.steps));
-    const scenario::StepCost c = scenario::stepCost(timed.stepSeconds);
-    p50.push_back(c.p50);
-    p99.push_back(c.p99);
-    max.push_back(c.max);
+    const TimedRun r = timedRun(spec);
+    if (!r.ok) break;
+    t.add(r);
   }
-  {
-    scenario::Simulation sim(spec);
-    s.result = scenario::runScenario(sim, scenario::RunOptions{});
+  return t.summary(spec);
+}
+
+PairedSummary runPaired(const scenario::ScenarioSpec& a, const scenario::ScenarioSpec& b, int repeats) {
+  Timings ta, tb;
+  std::vector<double> ratios;
+  for (int i = 0; i < repeats; ++i) {
+    const TimedRun ra = timedRun(a), rb = timedRun(b);
+    if (!ra.ok || !rb.ok) break;
+    ta.add(ra);
+    tb.add(rb);
+    ratios.push_back(ra.perStepUs / rb.perStepUs);
   }
-  auto median = [](std::vector<double>& v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  if (!perStep.empty()) {
-    s.wallPerStepUs = median(perStep);
-    s.stepCost = {median(p50), median(p99), median(max)};
-  }
-  return s;
+  PairedSummary p{ta.summary(a), tb.summary(b), 0.0};
+  if (!ratios.empty()) p.ratio = median(ratios);
+  return p;
 }
 
 scenario::ScenarioSpec withIntegrator(scenario::ScenarioSpec s, scenario::IntegratorMethod m, double step, int order,

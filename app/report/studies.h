@@ -38,6 +38,16 @@ struct RunSummary {
 // kept).
 RunSummary runRepeated(const scenario::ScenarioSpec& spec, int repeats);
 
+// Two scenarios timed in turn, a then b, `repeats` times (a machine whose
+// speed drifts over the minutes slows both of a pair alike): each one's
+// summary as runRepeated's, and the median of the pairs' ratios a / b of
+// wall time per step (0 for none).
+struct PairedSummary {
+  RunSummary a, b;
+  double ratio = 0;
+};
+PairedSummary runPaired(const scenario::ScenarioSpec& a, const scenario::ScenarioSpec& b, int repeats);
+
 // refresh: bdfcar's Newton policy (a refresh when Newton stops contracting,
 // a step's count ended at the first iteration within tolerance); false: the
 // paper's method as published (the count in full, nothing else).

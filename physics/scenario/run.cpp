@@ -241,9 +241,15 @@ std::optional<CourseResult> Run::course() const {
 
 StepCost stepCost(std::vector<float> s) {
   if (s.empty()) return {};
-  std::sort(s.begin(), s.end());
-  auto at = [&](double q) { return 1e6 * s[std::min(s.size() - 1, static_cast<size_t>(q * (s.size() - 1) + 0.5))]; };
-  return {at(0.5), at(0.99), 1e6 * s.back()};
+  // The ranks by selection, not a sort: each partition leaves the rank's
+  // value in place and the larger ones above it (the next, higher rank is
+  // selected among those, the one placed left where it is).
+  auto rank = [&](double q) { return std::min(s.size() - 1, static_cast<size_t>(q * (s.size() - 1) + 0.5)); };
+  const size_t i50 = rank(0.5), i99 = rank(0.99);
+  std::nth_element(s.begin(), s.begin() + i50, s.end());
+  if (i99 > i50) std::nth_element(s.begin() + i50 + 1, s.begin() + i99, s.end());
+  const float max = *std::max_element(s.begin() + i99, s.end());
+  return {1e6 * s[i50], 1e6 * s[i99], 1e6 * max};
 }
 
 RunResult runScenario(Simulation& sim, const RunOptions& options) {
