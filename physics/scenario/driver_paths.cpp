@@ -98,10 +98,13 @@ PolylinePath::Nearest PolylinePath::nearest(const Eigen::Vector2d& q) const {
   const int rings = std::max({cx, cols_ - 1 - cx, cy, rows_ - 1 - cy});
   for (int ring = 0; ring <= rings; ++ring) {
     // Every segment outside the square of rings searched so far (ring - 1
-    // cells around q's cell) is at least ring - 1 cells from q; a margin for
-    // rounding.
-    const double bound = (ring - 1) * cell_;
-    if (ring > 1 && n.dist < bound * bound * (1.0 - 1e-9)) break;
+    // cells around q's cell) is at least as far from q as that square's
+    // nearest edge (ring - 1 cells and q's offset in its own cell); a margin
+    // for rounding. Nearer than that, the nearest found is the nearest (and
+    // the first of equals: none outside can tie).
+    const double R = ring - 1;
+    const double edge = cell_ * std::min({g.x() - (cx - R), (cx + R + 1) - g.x(), g.y() - (cy - R), (cy + R + 1) - g.y()});
+    if (ring > 0 && n.dist < edge * edge * (1.0 - 1e-9)) break;
     auto visit = [&](int r, int c) {
       if (r < 0 || r >= rows_ || c < 0 || c >= cols_) return;
       const size_t cellIndex = static_cast<size_t>(r) * cols_ + c;
