@@ -157,10 +157,9 @@ const KinematicCar::CornerPose& KinematicCar::cornerPose(int w, double travel) c
       -f.c * th.s, f.s, f.c * th.c;
   P.R.noalias() = C.rest * M;
   P.t = Vec3(s.f[0], s.f[1], s.f[2]);
-  Mat3 E;
-  E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
+  P.E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
   const Vec3 da0(s.grad[3][0], s.grad[4][0], s.grad[5][0]);
-  P.w0 = E * da0;
+  P.w0 = P.E * da0;
   P.ts = Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
   P.phi = f;
   P.theta = th;
@@ -181,8 +180,7 @@ void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerM
   const Vec3& w0 = P.w0;
   out.ws.noalias() = out.R * w0;
   if (!withRates) return;
-  Mat3 E;
-  E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
+  const Mat3& E = P.E;
   const int nv = C.steered ? 2 : 1;
   const double rates[2] = {travelRate, C.steered ? rackNow_.rate : 0.0};
   // dE/dphi has one non-zero column (the first), dE/dtheta two (the first two).

@@ -96,15 +96,15 @@ class KinematicCar final : public ClosedFormCar {
   void cornerMotion(int w, double travel, double travelRate, CornerMotion& m, bool withRates) const;
   // A corner's table at a travel and rack travel, the angles' sines and
   // cosines and the pose from them: a pure function of the two, kept for the
-  // last pair (the step's first residual is at the travel beginStep took;
-  // a finite-difference Jacobian moves one corner's travel in 4 of its 31
-  // residuals).
+  // last pair (where the ground needs beginStep, the step's first residual
+  // is at the travel it took; a finite-difference Jacobian moves a corner's
+  // travel in 2 of its 2 nv + 1 residuals).
   struct CornerPose {
     std::uint64_t travelBits = 0, rackBits = 0;
     bool valid = false;
     mb::SplineGrid::Sample s;
     pm::SinCos phi, theta;  // of the roll and pitch angles (the rates need them)
-    Mat3 R;
+    Mat3 R, E;              // E: the angles' rates to the angular velocity, carrier axes
     Vec3 t, ts, w0;
   };
   const CornerPose& cornerPose(int w, double travel) const;
