@@ -248,5 +248,47 @@ TEST(Envelope, CurbStrikeAtTheDriversStepIsRefinedWhereTheWheelsHitTheCurb) {
                                                    << error << " %)";
 }
 
+TEST(Envelope, AStepJudgedAfterItsFirstIterationRefinesAsTheConvergedMissDoes) {
+  // The rough road lane change as its file runs it (10 ms, the default
+  // policy), its first second of manoeuvre: a step whose first Newton
+  // iterate is already twice refine_error from its predictor is halved at
+  // once instead of converged first (BdfOptions::refineFromFirstIterate).
+  // Against the same run judged only when converged (the second
+  // algorithm): as many steps refined (the judged ones are those the
+  // converged miss refines anyway), fewer Newton iterations, and as close
+  // to the run converged at 1 ms (as RESULTS 5d takes it): yaw rate and
+  // lateral acceleration, RMS as % of their peaks, no more than 0.1 point
+  // further. Measured: 459 steps refined against 450, 3857 Newton
+  // iterations against 4477, 2.17 % from the 1 ms run against 2.19 %;
+  // judged at once refine_error away (not twice), 484 steps are refined:
+  // some the converged miss keeps whole (this test fails).
+  scenario::ScenarioSpec spec = scenario::loadScenarioFile(std::string(BDFCAR_SOURCE_DIR) +
+                                                           "/assets/scenarios/hard/rough_lane_change.toml");
+  spec.duration = 3.0;  // the sine starts at 2 s
+  scenario::Simulation judgedSim(spec);
+  const scenario::RunResult judged = scenario::runScenario(judgedSim, {});
+  ASSERT_TRUE(judged.ok) << judged.failure;
+  scenario::ScenarioSpec convergedSpec = spec;
+  convergedSpec.integrator.bdf.refineFromFirstIterate = false;
+  scenario::Simulation convergedSim(convergedSpec);
+  const scenario::RunResult converged = scenario::runScenario(convergedSim, {});
+  ASSERT_TRUE(converged.ok) << converged.failure;
+  scenario::ScenarioSpec fineSpec = spec;
+  fineSpec.integrator.step = 0.001;
+  fineSpec.integrator.bdf.newtonIterations = 0;
+  fineSpec.integrator.bdf.jacobianEvery = 1;
+  scenario::Simulation fineSim(fineSpec);
+  const scenario::RunResult fine = scenario::runScenario(fineSim, {});
+  ASSERT_TRUE(fine.ok) << fine.failure;
+
+  const double refined = static_cast<double>(converged.counters.refinements);
+  ASSERT_GT(refined, 100);
+  EXPECT_NEAR(static_cast<double>(judged.counters.refinements), refined, 0.05 * refined);
+  EXPECT_LT(static_cast<double>(judged.counters.newtonIterations),
+            0.95 * static_cast<double>(converged.counters.newtonIterations));
+  const double judgedError = yawAndLateralRmsPercent(fine, judged), convergedError = yawAndLateralRmsPercent(fine, converged);
+  EXPECT_LT(judgedError, convergedError + 0.1) << "converged only: " << convergedError << " %";
+}
+
 }  // namespace
 }  // namespace bdfcar

@@ -34,6 +34,10 @@ int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std
 // bits: the same h' for the iteration matrix within 1e-9 of it (0: none).
 bool sameHPrime(double hp, double other) { return other != 0 && std::abs(hp - other) <= 1e-9 * hp; }
 
+// A first Newton iterate this many refineError from the predictor ends the
+// attempt as refined (BdfIntegrator::newton, refineEarly).
+constexpr double kFirstIterateMiss = 2.0;
+
 }  // namespace
 
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
@@ -399,7 +403,8 @@ double BdfIntegrator::correctionNorm() const {
 // Newton iterations from the current iterate: `iterations` of them, or up to
 // maxNewtonIterations until the correction is within tolerance.
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
-                                                   bool toTolerance, StepReport& rep, bool refreshFast, bool solveRows) {
+                                                   bool toTolerance, StepReport& rep, bool refreshFast, bool solveRows,
+                                                   bool refineEarly) {
   bool refreshNow = refreshFast;
   solveRows = solveRows && fastParts_ && opt_.fastRowSolve;
   const int nv = n_.nv, nc = n_.nc;
@@ -481,6 +486,13 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       rep.message.set("non-finite Newton correction at t = %.6g s (iteration %d)", t, it);
       return NewtonOutcome::Failed;
     }
+    // From the predictor, the first correction is the predictor's miss to
+    // first order: a first iterate twice refineError away is a step that
+    // will be taken again as halves (the factor: a stale Jacobian's first
+    // correction may overshoot; at twice, the steps judged here are those
+    // the converged miss refines anyway, tests/test_envelope.cpp).
+    if (refineEarly && it == 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > kFirstIterateMiss * opt_.refineError)
+      return NewtonOutcome::Refine;
     if (norm <= 1.0) {
       if (toTolerance || opt_.stopWithinTolerance) return NewtonOutcome::Converged;
     } else if (it > 1 && rep.contraction > (toTolerance ? 1.0 : opt_.contractionLimit)) {
@@ -680,7 +692,13 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   if (!sameHPrime(c.hPrime, factorizedHPrime_)) factorize(c.hPrime);
   rep.status = StepStatus::Ok;
   const bool fixedCount = opt_.newtonIterations > 0;
-  NewtonOutcome out = newton(tNew, c, opt_.newtonIterations, !fixedCount, rep);
+  const bool judged = mayRefine && st_->count > 1;  // the predictor's miss (below)
+  NewtonOutcome out =
+      newton(tNew, c, opt_.newtonIterations, !fixedCount, rep, false, false, judged && opt_.refineFromFirstIterate);
+  if (out == NewtonOutcome::Refine) {
+    rep.refine = true;
+    return rep;
+  }
   if (out == NewtonOutcome::Failed) return rep;
   if (out == NewtonOutcome::NotContracting && opt_.refreshWhenNotContracting) {
     out = recover(tNew, c, fresh, lastResort, rep);
@@ -694,7 +712,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   // The predictor's miss (from the second step on: the first's predictor is
   // a constant) measures the step's local error (Milne's device: BDF2's is
   // about 2/9 of it); too large, the step is taken again as halves.
-  if (mayRefine && st_->count > 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
+  if (judged && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
     rep.refine = true;
     return rep;
   }

@@ -79,6 +79,13 @@ struct BdfOptions {
   // (and off with refreshWhenNotContracting: the paper's method).
   double refineError = 3e-3;
   int refineDepth = 3;
+  // The miss judged after the first Newton iteration too: a first iterate
+  // twice refineError from the predictor (Newton's first correction from it
+  // is the miss to first order) is halved at once, before the iterations,
+  // fast-column refreshes and rescues that would converge a step taken
+  // again anyway (on the rough road and the washboard an eighth of all
+  // iterations). Off only to measure what it buys (RESULTS 4b).
+  bool refineFromFirstIterate = true;
   StartUp startUp = StartUp::Auto;
   // Accumulate the Jacobian / residual / back-substitution split (the
   // report's section 5, the benchmarks). Off unless asked: its clock reads,
@@ -145,11 +152,13 @@ class BdfIntegrator final : public Integrator {
   // first `rows` rows (the velocity solves use only the first nv).
   void applyLowRankUpdate(Vec& x, int rows);
   void startFromPredictor();
-  enum class NewtonOutcome { Converged, NotContracting, Failed };
+  // Refine: the first iterate missed the predictor by more than refineError (refineEarly).
+  enum class NewtonOutcome { Converged, NotContracting, Failed, Refine };
   // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.
   // solveRows: each correction's fast coordinates by solveFastRows (the fast-column rescue's full Newton).
+  // refineEarly: end with Refine after a first iterate that far from the predictor.
   NewtonOutcome newton(double t, const BdfCoefficients& c, int iterations, bool toTolerance, StepReport& rep,
-                       bool refreshFast = false, bool solveRows = false);
+                       bool refreshFast = false, bool solveRows = false, bool refineEarly = false);
   enum class JacobianScope { FastColumns, Whole };
   NewtonOutcome fullNewton(double t, const BdfCoefficients& c, JacobianScope scope, StepReport& rep);
   NewtonOutcome recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort, StepReport& rep);
