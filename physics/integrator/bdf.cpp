@@ -490,8 +490,11 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     // first order: a first iterate twice refineError away is a step that
     // will be taken again as halves (the factor: a stale Jacobian's first
     // correction may overshoot; at twice, the steps judged here are those
-    // the converged miss refines anyway, tests/test_envelope.cpp).
-    if (refineEarly && it == 1 && (d_ - dPred_).lpNorm<Eigen::Infinity>() > kFirstIterateMiss * opt_.refineError)
+    // the converged miss refines anyway, tests/test_envelope.cpp). Within
+    // tolerance it is millimetres below that (and judged when accepted):
+    // most steps pay no pass over the coordinates for it.
+    if (refineEarly && it == 1 && norm > 1.0 &&
+        (d_ - dPred_).lpNorm<Eigen::Infinity>() > kFirstIterateMiss * opt_.refineError)
       return NewtonOutcome::Refine;
     if (norm <= 1.0) {
       if (toTolerance || opt_.stopWithinTolerance) return NewtonOutcome::Converged;
