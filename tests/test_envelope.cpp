@@ -286,7 +286,8 @@ TEST(Envelope, AStepJudgedAfterItsFirstIterationRefinesAsTheConvergedMissDoes) {
   EXPECT_NEAR(static_cast<double>(judged.counters.refinements), refined, 0.05 * refined);
   EXPECT_LT(static_cast<double>(judged.counters.newtonIterations),
             0.95 * static_cast<double>(converged.counters.newtonIterations));
-  const double judgedError = yawAndLateralRmsPercent(fine, judged), convergedError = yawAndLateralRmsPercent(fine, converged);
+  const double judgedError = yawAndLateralRmsPercent(fine, judged);
+  const double convergedError = yawAndLateralRmsPercent(fine, converged);
   EXPECT_LT(judgedError, convergedError + 0.1) << "converged only: " << convergedError << " %";
 }
 

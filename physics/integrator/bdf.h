@@ -152,7 +152,7 @@ class BdfIntegrator final : public Integrator {
   // first `rows` rows (the velocity solves use only the first nv).
   void applyLowRankUpdate(Vec& x, int rows);
   void startFromPredictor();
-  // Refine: the first iterate missed the predictor by more than refineError (refineEarly).
+  // Refine: the first iterate missed the predictor by twice refineError (refineEarly).
   enum class NewtonOutcome { Converged, NotContracting, Failed, Refine };
   // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.
   // solveRows: each correction's fast coordinates by solveFastRows (the fast-column rescue's full Newton).
