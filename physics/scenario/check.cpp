@@ -63,7 +63,18 @@ CheckResult checkScenario(const ScenarioSpec& spec, std::vector<vehicle::Vehicle
     if (grounded == 0 && s.t > 0) w.allAirborne = true;
     w.last = s;
   };
-  RunResult run = runScenario(sim, o);
+  RunResult run;
+  try {
+    run = runScenario(sim, o);
+  } catch (const PrepareError& e) {
+    // The car cannot start in this scene (a vehicle that does not assemble,
+    // the planar rung on a slope): the case fails with the reason, and a
+    // batch of cases goes on with the next.
+    r.passed = false;
+    r.outcome = "could not start";
+    r.failures.push_back(e.what());
+    return r;
+  }
   if (samples) *samples = std::move(run.samples);
   r.cost = stepCost(run.stepSeconds);
   r.counters = run.counters;

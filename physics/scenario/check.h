@@ -26,6 +26,8 @@ struct CheckResult {
 
 // Runs the scenario (with its [check], or the default bounds) and judges it;
 // the run's samples go to *samples when given (comparisons with other runs).
+// A car that cannot start in the scene (PrepareError) is a failed case whose
+// outcome says so; an output that cannot be written still throws.
 CheckResult checkScenario(const ScenarioSpec& spec, std::vector<vehicle::VehicleSample>* samples = nullptr);
 
 const char* outcomeName(CheckSpec::Outcome o);
