@@ -73,7 +73,7 @@ class PreviewDriver {
   PathOffset offset_;
 };
 
-// The internal model's parameters for a vehicle on road friction mu.
+// The internal model's parameters for a vehicle (its linkage: World::linkageVehicle) on road friction mu.
 PreviewDriverParams previewDriverParams(const vehicle::Vehicle& v, double mu, double tick);
 
 }  // namespace bdfcar::scenario

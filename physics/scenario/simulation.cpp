@@ -83,7 +83,7 @@ std::unique_ptr<Signal> steeringSignal(const ScenarioSpec& spec) {
 }  // namespace
 
 CarSteering Simulation::carSteering() const {
-  const vehicle::Vehicle& v = world_->vehicle;
+  const vehicle::Vehicle& v = world_->linkageVehicle();
   return {v.spec.steering.steeringWheelFull, vehicle::roadWheelAnglePerSteer(v), v.spec.geometry.wheelbase};
 }
 
@@ -130,7 +130,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
     p.minLookAhead = spec.pathFollower.minLookAhead;
     p.wheelbase = veh.spec.geometry.wheelbase;
     // Steering ratio from the kinematics of the data.
-    p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(veh));
+    p.steerPerRoadWheel = 1.0 / std::max(1e-3, vehicle::roadWheelAnglePerSteer(world_->linkageVehicle()));
     const PathFollowerSpec& f = spec.pathFollower;
     PathTarget target;
     if (f.path == PathFollowerSpec::Path::Course) {
@@ -154,7 +154,7 @@ Simulation::Simulation(std::shared_ptr<const World> world)
       target = [c](double x, double y, double, double L) { return c.target(x, y, L); };
     }
     if (f.law == PathFollowerSpec::Law::Preview) {
-      PreviewDriverParams pp = previewDriverParams(veh, startFriction(), spec.tick);
+      PreviewDriverParams pp = previewDriverParams(world_->linkageVehicle(), startFriction(), spec.tick);
       pp.previewTime = f.previewTime;
       pp.car = identifySingleTrack(spec, world_->scene, pp.car).car;  // the car as it answers
       preview_.emplace(pp, pathOffset(veh));

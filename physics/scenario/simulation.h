@@ -82,6 +82,11 @@ std::shared_ptr<const Scene> buildScene(const ScenarioSpec& spec);
 struct World {
   ScenarioSpec spec;
   vehicle::Vehicle vehicle;
+  // The linkage the vehicle was derived from (none: the vehicle is the
+  // linkage): what a driver steers by (its steering ratio, its single-track
+  // model) is the car's, the same on every rung.
+  std::shared_ptr<const vehicle::Vehicle> linkage;
+  const vehicle::Vehicle& linkageVehicle() const { return linkage ? *linkage : vehicle; }
   std::shared_ptr<const Scene> scene;
   std::shared_ptr<const terrain::Terrain> terrain;  // the scene's
   // The ISO 3888 course is the car's: its lanes are sized to the car's width.

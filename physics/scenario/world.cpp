@@ -83,6 +83,8 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, std::shared_pt
   // Steering in engineering units becomes the normalised input, from the linkage's scales.
   w->spec.steering = normalisedSteering(spec.steering, w->vehicle);
   const vehicle::Fidelity rung = spec.fidelity.suspension;
+  if (spec.fidelity.automatic || rung != vehicle::Fidelity::Linkage)
+    w->linkage = std::make_shared<const vehicle::Vehicle>(w->vehicle);
   // A derived model names the vehicle file and the rung the scenario asked for.
   auto derive = [&](auto derivation) {
     try {
@@ -136,6 +138,7 @@ std::shared_ptr<const World> buildWorld(const ScenarioSpec& spec, const vehicle:
   w->spec.fidelity.suspension = model.fidelity;
   w->spec.steering = normalisedSteering(spec.steering, linkage);
   w->vehicle = std::move(model);
+  if (w->vehicle.fidelity != vehicle::Fidelity::Linkage) w->linkage = std::make_shared<const vehicle::Vehicle>(linkage);
   finishWorld(*w);
   return w;
 }

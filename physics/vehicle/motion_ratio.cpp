@@ -3,11 +3,14 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <cmath>
+#include <optional>
 
 #include "multibody/constraints.h"
 #include "multibody/kinematics.h"
+#include "multibody/model_error.h"
 #include "multibody/multibody_dae.h"
 #include "vehicle/equilibrium.h"
+#include "vehicle/linkage_sweep.h"
 #include "portable_math.h"
 
 namespace bdfcar::vehicle {
@@ -99,21 +102,51 @@ void indexSuspensionChannels(Vehicle& v) {
 }
 
 double roadWheelAnglePerSteer(const Vehicle& v) {
-  const mb::Model& m = v.model;
-  mb::MultibodyDae dae(m);
-  mb::Data d = mb::makeData(m);
+  // Each wheel held at its design height while the rack moves, as the K&C
+  // rig's steering ratio: the linkage assembled from its design positions
+  // with only the rack moved closes its loops by moving the suspension too
+  // (Newton's least-norm closure slides a MacPherson strut and lifts one
+  // wheel and drops the other), which took 7 % off the sedan's angle and
+  // made the derived rungs, whose wheel travels are coordinates held at
+  // design here, disagree with their own linkage.
   const double steer = 0.05;
-  double angle[2] = {0, 0};
-  for (int k = 0; k < 2; ++k) {
-    const double s = k == 0 ? steer : -steer;
-    Eigen::VectorXd q = designPositions(v);
-    setRackTravel(v, q, v.layout.rackAxisSign * -v.spec.steering.rackTravelFull * s);
-    std::string msg;
-    if (!assemble(v, dae, 0, q, msg)) return 0;
-    mb::updatePositions(m, q, d);
+  const double rackPerSteer = v.layout.rackAxisSign * -v.spec.steering.rackTravelFull;
+  auto meanFrontAngle = [&](const mb::Data& d) {
+    double angle = 0;
     for (int w = 0; w < 2; ++w) {
       const Eigen::Vector3d n = d.R[v.layout.chassis].transpose() * d.R[v.layout.wheels[w].spindle].col(1);
-      angle[k] += 0.5 * pm::atan2(-n.x(), n.y());
+      angle += 0.5 * pm::atan2(-n.x(), n.y());
+    }
+    return angle;
+  };
+  double angle[2] = {0, 0};
+  std::optional<LinkageSweep> rig;
+  if (v.fidelity == Fidelity::Linkage) {
+    try {
+      rig.emplace(v);
+    } catch (const mb::ModelError&) {
+      // Not one free motion per wheel with the rack held (no rig can hold
+      // its wheels): the plain assembly below, suspension free.
+    }
+  }
+  if (rig) {
+    const double rack0 = rig->design()(v.layout.rackQ);
+    for (int k = 0; k < 2; ++k) {
+      Eigen::VectorXd q = rig->design();
+      if (!rig->solve(0.0, rack0 + (k == 0 ? steer : -steer) * rackPerSteer, q)) return 0;
+      angle[k] = meanFrontAngle(rig->at(q));
+    }
+  } else {
+    const mb::Model& m = v.model;
+    mb::MultibodyDae dae(m);
+    mb::Data d = mb::makeData(m);
+    for (int k = 0; k < 2; ++k) {
+      Eigen::VectorXd q = designPositions(v);
+      setRackTravel(v, q, (k == 0 ? steer : -steer) * rackPerSteer);
+      std::string msg;
+      if (!assemble(v, dae, 0, q, msg)) return 0;
+      mb::updatePositions(m, q, d);
+      angle[k] = meanFrontAngle(d);
     }
   }
   return (angle[0] - angle[1]) / (2 * steer);

@@ -25,7 +25,9 @@ std::vector<MotionRatio> motionRatios(const Vehicle& v);
 void indexSuspensionChannels(Vehicle& v);
 
 // Mean road-wheel steer angle of the front wheels per unit normalised
-// steering input (rad), from the kinematics: assembled at small rack travels.
+// steering input (rad), from the kinematics: small rack travels either side
+// of centre with the wheels at their design height (as kc_rig.h's steering
+// ratio); the same figure on every rung derived from a linkage.
 double roadWheelAnglePerSteer(const Vehicle& v);
 
 }  // namespace bdfcar::vehicle
