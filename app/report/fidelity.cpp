@@ -228,9 +228,9 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
       }
     }
   }
-  md << "\nThe ISO 3888-1 course is driven by the path follower, in closed loop: the two models' small "
-     << "differences change the driver's commands from the first second, so that row measures the driver as "
-     << "much as the model; the open-loop manoeuvres above it measure the model.\n"
+  md << "\nThe ISO 3888-1 course is driven by the path follower, in closed loop: on every rung it steers by "
+     << "the car's steering ratio (the linkage's, at centre with the wheels at design height), so that row "
+     << "measures the model through the driver's answer to it.\n"
      << "\nThe kinematic rung keeps the linkage's kinematics (tables within micrometres and microradians, above) "
      << "and its travel inertia; what it leaves out is the links' own motion: their weight and inertia "
      << "outside the travel direction go to the carrier and the chassis, and the elastic and friction "
