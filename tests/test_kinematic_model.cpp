@@ -66,12 +66,15 @@ TEST_P(KinematicModel, SettlesWhereTheLinkageSettles) {
   const vehicle::EquilibriumReport a = settle(link), b = settle(k.vehicle);
   ASSERT_TRUE(a.converged) << a.message;
   ASSERT_TRUE(b.converged) << b.message;
-  // The same weight on the same springs through the same geometry. The links'
-  // inertia along travel is matched (the carrier's mass), their weight is not:
-  // it hangs on the carrier and the chassis, not through the link geometry,
-  // a few newtons per wheel, a fraction of a millimetre on the springs.
-  EXPECT_NEAR(b.chassisHeight, a.chassisHeight, 5e-4);
-  EXPECT_NEAR(b.pitch, a.pitch, 5e-4);
+  // The same weight on the same springs through the same geometry: the
+  // links' inertia along travel through the carrier's mass, their weight
+  // along travel through each corner's lumped weight (exact at design; the
+  // car rests a millimetre from it). Without the lumped weight the sedan
+  // rested 0.6 mm lower at the rear and 0.22 mrad more nose-down.
+  std::printf("%s: chassis height %.3g m, pitch %.3g rad from the linkage's\n", GetParam(),
+              b.chassisHeight - a.chassisHeight, b.pitch - a.pitch);
+  EXPECT_NEAR(b.chassisHeight, a.chassisHeight, 2e-5);
+  EXPECT_NEAR(b.pitch, a.pitch, 2e-5);
   for (int w = 0; w < 4; ++w) EXPECT_NEAR(b.wheelLoads[w], a.wheelLoads[w], 2e-3 * a.wheelLoads[w]) << w;
 }
 

@@ -70,6 +70,7 @@ SpringDamper::Parts SpringDamper::parts(double L, double Ldot) const {
   Parts p;
   p.spring = preload + spring.eval(freeLength - L);
   p.damper = damper.eval(-Ldot);
+  p.weight = lumpedWeight;
   if (bumpLength > 0 && L < bumpLength) p.stop += bumpStiffness * (bumpLength - L);
   if (reboundLength > 0 && L > reboundLength) p.stop -= reboundStiffness * (L - reboundLength);
   return p;

@@ -127,6 +127,12 @@ struct SpringDamper {
   double bumpStiffness = 0.0;    // N/m
   double reboundLength = 0.0;    // rebound stop engages when L > reboundLength (0 = none)
   double reboundStiffness = 0.0;
+  // A reduced model's correction (N, + apart), 0 in a linkage: the links'
+  // weight along this element's travel that lumping them into the chassis
+  // and the carrier put on the element (kinematic_model.h). It acts as the
+  // element's force does but is not the element's: Parts::weight, outside
+  // the spring, damper and stop a telemetry channel reports.
+  double lumpedWeight = 0.0;
   // Tabulated length (a reduced model): the length is component
   // tableComponent of body tableBody's joint table, a function of that joint's
   // coordinates, and the force acts on them as the generalised force
@@ -135,8 +141,8 @@ struct SpringDamper {
   // The force (+ = apart) at length L and rate dL/dt, by where it comes
   // from: the spring with its preload, the damper, the bump and rebound stops.
   struct Parts {
-    double spring = 0, damper = 0, stop = 0;
-    double total() const { return spring + damper + stop; }
+    double spring = 0, damper = 0, stop = 0, weight = 0;
+    double total() const { return spring + damper + stop + weight; }
   };
   Parts parts(double length, double lengthRate) const;
   double force(double length, double lengthRate) const { return parts(length, lengthRate).total(); }

@@ -106,6 +106,7 @@ std::uint64_t derivationFingerprint(const Vehicle& v) {
     f.add(s.pointB);
     f.add(s.freeLength);
     f.add(s.preload);
+    f.add(s.lumpedWeight);
     f.add(s.spring);
     f.add(s.damper);
     f.add(s.bumpLength);

@@ -13,7 +13,11 @@
 //  - each carrier's mass makes its corner's generalised mass along travel
 //    equal to the linkage's (N^T M N over the sweep's travel direction N);
 //    the chassis takes the rest: total mass, centre of mass and inertia at
-//    design are the linkage's.
+//    design are the linkage's;
+//  - the links' weight along travel that this lumping moves (the linkage's
+//    sum m dz/ds less the carrier's) acts on each corner's first spring as
+//    its lumped weight (exact at design): the model rests where the linkage
+//    rests.
 // The same tyres, terrain, steering and telemetry apply. deriveKinematic also
 // checks the tables against the linkage between the grid nodes.
 #pragma once
