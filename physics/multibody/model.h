@@ -139,7 +139,8 @@ struct SpringDamper {
   // F dL/dc (points unused). -1: a point-to-point element.
   int tableBody = -1, tableComponent = -1;
   // The force (+ = apart) at length L and rate dL/dt, by where it comes
-  // from: the spring with its preload, the damper, the bump and rebound stops.
+  // from: the spring with its preload, the damper, the bump and rebound
+  // stops, and a reduced model's lumped weight.
   struct Parts {
     double spring = 0, damper = 0, stop = 0, weight = 0;
     double total() const { return spring + damper + stop + weight; }
