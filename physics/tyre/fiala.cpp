@@ -55,14 +55,17 @@ PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, d
   return fialaPatchForcesTan(p, kappa, pm::tan(alpha), Fz, mu);
 }
 
-TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prev,
-                               double h, std::optional<double> load) const {
-  TyreOutput out;
+void FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prevIn,
+                               double h, std::optional<double> load, TyreOutput& out) const {
+  // Every field written: the caller's output from an earlier evaluation is
+  // overwritten as a whole (the slips copied first: they may be the caller's).
+  const SlipState prev = prevIn;
+  out = TyreOutput{};
   out.slipState = prev;
   const std::optional<ContactGeometry> geo = contactGeometry(w, g, p_.unloadedRadius);
   if (!geo) {
     out.slipState = SlipState{};
-    return out;
+    return;
   }
   const Vec3& ez = g.normal;
   const Vec3& xc = geo->xc;
@@ -75,7 +78,7 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   const std::optional<double> Fzo = smoothedLoad(raw, delta, load.has_value());
   if (!Fzo) {
     out.slipState = SlipState{};
-    return out;
+    return;
   }
   const double Fz = *Fzo;
   if (load) delta = Fz / p_.verticalStiffness;
@@ -129,7 +132,7 @@ TyreOutput FialaTyre::evaluate(const WheelKinematics& w, const ContactPlane& g, 
   out.vsx = vsx;
   out.vsy = vsy;
   out.slipState = next;
-  return out;
+  return;
 }
 
 }  // namespace bdfcar::tyre

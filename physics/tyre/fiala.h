@@ -44,8 +44,15 @@ PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, d
 class FialaTyre {
  public:
   explicit FialaTyre(const FialaParams& p) : p_(p) {}
+  // Into out, every field of it (the step's path: no output copied).
+  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
+                std::optional<double> load, TyreOutput& out) const;
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
-                      double h, std::optional<double> load = std::nullopt) const;
+                      double h, std::optional<double> load = std::nullopt) const {
+    TyreOutput out;
+    evaluate(wheel, ground, previous, h, load, out);
+    return out;
+  }
   double unloadedRadius() const { return p_.unloadedRadius; }
   double width() const { return p_.width; }
   const FialaParams& params() const { return p_; }

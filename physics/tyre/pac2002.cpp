@@ -168,14 +168,17 @@ Pac2002Tyre::Pac2002Tyre(const Pac2002Params& p) : p_(p) {
   p_.measuredLeft = p_.mountedLeft;  // mirrored once, here
 }
 
-TyreOutput Pac2002Tyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prev, double h,
-                                 std::optional<double> load) const {
-  TyreOutput out;
+void Pac2002Tyre::evaluate(const WheelKinematics& w, const ContactPlane& g, const SlipState& prevIn, double h,
+                                 std::optional<double> load, TyreOutput& out) const {
+  // Every field written: the caller's output from an earlier evaluation is
+  // overwritten as a whole (the slips copied first: they may be the caller's).
+  const SlipState prev = prevIn;
+  out = TyreOutput{};
   out.slipState = prev;
   const std::optional<ContactGeometry> geo = contactGeometry(w, g, p_.unloadedRadius);
   if (!geo) {
     out.slipState = SlipState{};
-    return out;
+    return;
   }
   const Pac2002Coefficients& c = p_.c;
   const bool chrono = p_.variant == Pac2002Variant::Chrono9;
@@ -185,7 +188,7 @@ TyreOutput Pac2002Tyre::evaluate(const WheelKinematics& w, const ContactPlane& g
   const std::optional<double> Fzo = smoothedLoad(raw, delta, load.has_value());
   if (!Fzo) {
     out.slipState = SlipState{};
-    return out;
+    return;
   }
   const double Fz = *Fzo;
   if (load) delta = Fz / Cz;
@@ -275,7 +278,7 @@ TyreOutput Pac2002Tyre::evaluate(const WheelKinematics& w, const ContactPlane& g
   out.vsx = vsx;
   out.vsy = vsy;
   out.slipState = next;
-  return out;
+  return;
 }
 
 }  // namespace bdfcar::tyre

@@ -94,8 +94,15 @@ double pac2002PeakFriction(const Pac2002Params& p, double mu);
 class Pac2002Tyre {
  public:
   explicit Pac2002Tyre(const Pac2002Params& p);
+  // Into out, every field of it (the step's path: no output copied).
+  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
+                std::optional<double> load, TyreOutput& out) const;
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
-                      std::optional<double> load = std::nullopt) const;
+                      std::optional<double> load = std::nullopt) const {
+    TyreOutput out;
+    evaluate(wheel, ground, previous, h, load, out);
+    return out;
+  }
   double unloadedRadius() const { return p_.unloadedRadius; }
   const Pac2002Params& params() const { return p_; }
 

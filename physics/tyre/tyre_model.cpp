@@ -53,7 +53,17 @@ Tyre::Tyre(const TyreParams& p)
 
 TyreOutput Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
                           double h, std::optional<double> load) const {
-  return std::visit([&](const auto& m) { return m.evaluate(wheel, ground, previous, h, load); }, model_);
+  TyreOutput out;
+  evaluate(wheel, ground, previous, h, load, out);
+  return out;
+}
+
+void Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
+                    std::optional<double> load, TyreOutput& out) const {
+  if (const FialaTyre* fiala = std::get_if<FialaTyre>(&model_))
+    fiala->evaluate(wheel, ground, previous, h, load, out);
+  else
+    std::get<Pac2002Tyre>(model_).evaluate(wheel, ground, previous, h, load, out);
 }
 
 }  // namespace bdfcar::tyre

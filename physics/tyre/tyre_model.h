@@ -37,6 +37,9 @@ class Tyre {
   explicit Tyre(const TyreParams& p);
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
                       double h, std::optional<double> load = std::nullopt) const;
+  // The same into out, every field of it (the step's path: no output copied).
+  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
+                std::optional<double> load, TyreOutput& out) const;
   double unloadedRadius() const { return radius_; }
 
  private:

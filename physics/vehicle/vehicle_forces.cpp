@@ -536,7 +536,7 @@ const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKine
   const WheelContact& c = state_->wheels[w];
   WheelOutput& o = outputs_[w];
   o.spinRate = k.spinRate;
-  o.out = tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, load);
+  tyres_[w].evaluate(k, groundAt(w, k.centre), c.slip, h, load, o.out);
   return o.out;
 }
 
