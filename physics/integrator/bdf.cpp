@@ -41,7 +41,12 @@ constexpr double kFirstIterateMiss = 2.0;
 }  // namespace
 
 BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
-    : dae_(dae), opt_(options), n_(dae.sizes()), forward_(dae), lu_(n_.nv + n_.nc) {
+    : dae_(dae),
+      opt_(options),
+      n_(dae.sizes()),
+      kernels_(kernels::stepKernels(n_.nv, n_.nc)),
+      forward_(dae),
+      lu_(n_.nv + n_.nc) {
   opt_.order = std::clamp(opt_.order, 1, kMaxBdfOrder);
   const int nv = n_.nv, nc = n_.nc, n = nv + nc;
   ws_.resize(n_);
@@ -337,7 +342,7 @@ bool BdfIntegrator::updateFastColumns(double hp) {
 // bracketed: a few force-law evaluations per coordinate, no residual.
 void BdfIntegrator::solveFastRows(double t, double hp) {
   constexpr int kMaxEvaluations = 5;
-  constexpr double kTolerance = 1e-2;  // of the Newton correction's tolerance (correctionNorm)
+  constexpr double kTolerance = 1e-2;  // of the Newton correction's tolerance (its norm in newton())
   const std::vector<int>& fast = dae_.fastColumns();
   for (int k = 0; k < static_cast<int>(fast.size()); ++k) {
     const int i = fast[k];
@@ -388,18 +393,6 @@ void BdfIntegrator::applyLowRankUpdate(Vec& x, int rows) {
   x.head(rows).noalias() -= Z_.topRows(rows) * w2_;
 }
 
-double BdfIntegrator::correctionNorm() const {
-  // Weighted RMS of [dq; h' dv] with weights 1 / (atol + rtol |delta|).
-  const double hp = factorizedHPrime_;
-  double s = 0;
-  for (int i = 0; i < n_.nv; ++i) {
-    const double w = 1.0 / (opt_.atol + opt_.rtol * std::abs(d_(i)));
-    const double x = dq_(i) * w, y = hp * dv_(i) * w;
-    s += x * x + y * y;
-  }
-  return std::sqrt(s / (2.0 * std::max(1, n_.nv)));
-}
-
 // Newton iterations from the current iterate: `iterations` of them, or up to
 // maxNewtonIterations until the correction is within tolerance.
 BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficients& c, int iterations,
@@ -428,25 +421,23 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       return NewtonOutcome::Failed;
     }
     ScopedTimer timer(opt_.timing, timers_.backSubstitution);
-    // BDF residuals of the current iterate.
+    // BDF residuals of the current iterate, and the right-hand side of (3.8):
+    // [K* Phi_q^T; Phi_q 0][dq; h'^2 dlambda] = [-h'^2 F - h' F_v rhoQ - F_a (rhoQ + h' rhoV); -Phi]
+    // (the vector work in bdf_kernels.h: fixed-size for a small ODE).
     dae_.localRate(d_, v_, rate_);
-    rhoQ_ = d_ - xiQ_ - hp * rate_;
-    rhoV_ = v_ - xiV_ - hp * a_;
-    // (3.8): [K* Phi_q^T; Phi_q 0][dq; h'^2 dlambda] = [-h'^2 F - h' F_v rhoQ - F_a (rhoQ + h' rhoV); -Phi]
-    tmpV_ = rhoQ_ + hp * rhoV_;
-    rhs_.head(nv).noalias() = -(hp * hp) * r_.F;
-    rhs_.head(nv).noalias() -= hp * (dx_.Fv * rhoQ_);
-    rhs_.head(nv).noalias() -= Fa_ * tmpV_;
-    rhs_.tail(nc) = -r_.phi;
-    sol_.noalias() = Ainv_ * rhs_;
+    kernels_.residuals(nv, hp, {d_.data(), v_.data(), a_.data(), rate_.data(), xiQ_.data(), xiV_.data(), r_.F.data(),
+                                dx_.Fv.data(), Fa_.data()},
+                       {rhoQ_.data(), rhoV_.data(), tmpV_.data(), rhs_.data()});
+    for (int i = 0; i < nc; ++i) rhs_(nv + i) = -r_.phi(i);
+    kernels_.product(nv + nc, Ainv_.data(), rhs_.data(), sol_.data());
     applyLowRankUpdate(sol_, nv + nc);
-    dq_ = sol_.head(nv);
-    dlam_ = sol_.tail(nc) / (hp * hp);
+    std::copy_n(sol_.data(), nv, dq_.data());
+    for (int i = 0; i < nc; ++i) dlam_(i) = sol_(nv + i) / (hp * hp);
     if (solveRows) solveFastRows(t, hp);
     // (3.12): dv = w + e, w = cj (dq + rhoQ) the BDF correction, e the
     // K*-orthogonal correction that restores the linearised velocity
     // constraint Phi_q v + Phi_t + (Phi_q v)_q dq + Phi_q dv = 0.
-    dv_ = cj * (dq_ + rhoQ_);
+    kernels_.scaledSum(nv, cj, dq_.data(), rhoQ_.data(), dv_.data());
     if (nc > 0) {  // (an ODE, e.g. the closed-form planar car, has no constraint to restore)
       c_.noalias() = -(J_ * dv_);
       c_.noalias() -= dx_.phiDotQ * dq_;
@@ -458,7 +449,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
       dv_ += e_.head(nv);
     }
     // (3.14): the same for the accelerations and g + g_q dq + g_v dv + Phi_q da = 0.
-    da_ = cj * (dv_ + rhoV_);
+    kernels_.scaledSum(nv, cj, dv_.data(), rhoV_.data(), da_.data());
     if (nc > 0) {
       c_.noalias() = -(J_ * da_);
       c_.noalias() -= dx_.phiDDotQ * dq_;
@@ -471,17 +462,23 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     st_->counters.solves += 3;
     ++st_->counters.newtonIterations;
 
-    d_ += dq_;
-    v_ += dv_;
-    a_ += da_;
-    lam_ += dlam_;
-
-    const double norm = correctionNorm();
+    // The update, its norm (the weighted RMS of [dq; h' dv], weights
+    // 1 / (atol + rtol |delta|)) and the iterate's finiteness in one pass:
+    // x - x is 0 for a finite x and NaN otherwise.
+    double nonFinite = 0;
+    const double squares = kernels_.update(nv, {d_.data(), v_.data(), a_.data(), dq_.data(), dv_.data(), da_.data(),
+                                                opt_.atol, opt_.rtol, factorizedHPrime_},
+                                           nonFinite);
+    for (int i = 0; i < nc; ++i) {
+      lam_(i) += dlam_(i);
+      nonFinite += lam_(i) - lam_(i);
+    }
+    const double norm = std::sqrt(squares / (2.0 * std::max(1, nv)));
     if (it == 1) firstCorrection_ = norm;
     rep.iterations += 1;
     rep.correction = norm;
     rep.contraction = it > 1 ? norm / prevNorm : 0.0;
-    if (!std::isfinite(norm) || !d_.allFinite() || !v_.allFinite() || !a_.allFinite() || !lam_.allFinite()) {
+    if (!std::isfinite(norm) || !(nonFinite == 0)) {
       rep.status = StepStatus::Diverged;
       rep.message.set("non-finite Newton correction at t = %.6g s (iteration %d)", t, it);
       return NewtonOutcome::Failed;
@@ -494,7 +491,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     // tolerance it is millimetres below that (and judged when accepted):
     // most steps pay no pass over the coordinates for it.
     if (refineEarly && it == 1 && norm > 1.0 &&
-        (d_ - dPred_).lpNorm<Eigen::Infinity>() > kFirstIterateMiss * opt_.refineError)
+        predictorMiss() > kFirstIterateMiss * opt_.refineError)
       return NewtonOutcome::Refine;
     if (norm <= 1.0) {
       if (toTolerance || opt_.stopWithinTolerance) return NewtonOutcome::Converged;
@@ -576,6 +573,12 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::fullNewton(double t, const BdfCoeffi
   return NewtonOutcome::NotContracting;
 }
 
+double BdfIntegrator::predictorMiss() const {
+  double miss = 0;
+  for (int i = 0; i < n_.nv; ++i) miss = std::max(miss, std::abs(d_(i) - dPred_(i)));
+  return miss;
+}
+
 void BdfIntegrator::startFromPredictor() {
   d_ = dPred_;
   v_ = vPred_;
@@ -648,37 +651,31 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   for (int i = 1; i <= np; ++i) times[i] = node(i - 1).t;
   const BdfCoefficients c = bdfCoefficients(times.data(), k);
 
-  // Past nodes in local coordinates around q_{n-1}; BDF history terms.
-  xiQ_.setZero();
-  xiV_.setZero();
-  for (int i = 0; i < np; ++i) {
-    if (i == 0)
-      delta_[0].setZero();
-    else
-      dae_.localCoordinates(node(0).q, node(i).q, delta_[i]);
-  }
-  for (int i = 1; i <= k; ++i) {
-    xiQ_ += c.xi[i] * delta_[i - 1];
-    xiV_ += c.xi[i] * node(i - 1).v;
-  }
-  // Predictor: the polynomial through the last np nodes, at tNew.
+  // Past nodes in local coordinates around q_{n-1} (delta_0 = 0); the BDF
+  // history terms xi and the predictor, the polynomial through the last np
+  // nodes at tNew, which is also Newton's start (startFromPredictor); the
+  // sums in the order of the nodes (bdf_kernels.h).
+  for (int i = 1; i < np; ++i) dae_.localCoordinates(node(0).q, node(i).q, delta_[i]);
   std::array<double, kMaxBdfOrder + 2> w{};
   lagrangeWeights(times.data() + 1, np, tNew, w.data());
-  dPred_.setZero();
-  vPred_.setZero();
-  aPred_.setZero();
-  for (int i = 0; i < np; ++i) {
-    dPred_ += w[i] * delta_[i];
-    vPred_ += w[i] * node(i).v;
-    aPred_ += w[i] * node(i).a;
+  {
+    std::array<const double*, kMaxBdfOrder + 2> dl{}, vl{}, al{};
+    for (int i = 0; i < np; ++i) {
+      dl[i] = delta_[i].data();
+      vl[i] = node(i).v.data();
+      al[i] = node(i).a.data();
+    }
+    kernels_.predict(n_.nv, {k, np, c.xi.data(), w.data(), dl.data(), vl.data(), al.data()},
+                     {xiQ_.data(), xiV_.data(), dPred_.data(), vPred_.data(), aPred_.data(), d_.data(), v_.data(),
+                      a_.data()});
   }
   lamPred_ = node(0).lambda;
+  lam_ = lamPred_;
   dae_.retract(node(0).q, dPred_, q_);
   dae_.beginStep(tNew, q_, vPred_);
 
-  // The fixed count from the predictor with the Jacobian as it is (evaluated
-  // here when due); when it stalls, recover().
-  startFromPredictor();
+  // The fixed count from the predictor (the iterate is already there) with
+  // the Jacobian as it is (evaluated here when due); when it stalls, recover().
   qAtPredictor_ = true;
   bool fresh = false;
   if (jacobianDue || !haveBlocks_) {
@@ -715,7 +712,7 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   // The predictor's miss (from the second step on: the first's predictor is
   // a constant) measures the step's local error (Milne's device: BDF2's is
   // about 2/9 of it); too large, the step is taken again as halves.
-  if (judged && (d_ - dPred_).lpNorm<Eigen::Infinity>() > opt_.refineError) {
+  if (judged && predictorMiss() > opt_.refineError) {
     rep.refine = true;
     return rep;
   }

@@ -17,6 +17,7 @@
 #include <array>
 
 #include "integrator/bdf_coefficients.h"
+#include "integrator/bdf_kernels.h"
 #include "integrator/dae_blocks.h"
 #include "integrator/forward_dynamics.h"
 #include "integrator/step_types.h"
@@ -152,6 +153,8 @@ class BdfIntegrator final : public Integrator {
   // first `rows` rows (the velocity solves use only the first nv).
   void applyLowRankUpdate(Vec& x, int rows);
   void startFromPredictor();
+  // The iterate's largest coordinate distance from the predictor (m, rad).
+  double predictorMiss() const;
   // Refine: the first iterate missed the predictor by twice refineError (refineEarly).
   enum class NewtonOutcome { Converged, NotContracting, Failed, Refine };
   // refreshFast: re-evaluate the fast columns at the first iterate (from its residual) before solving.
@@ -162,11 +165,11 @@ class BdfIntegrator final : public Integrator {
   enum class JacobianScope { FastColumns, Whole };
   NewtonOutcome fullNewton(double t, const BdfCoefficients& c, JacobianScope scope, StepReport& rep);
   NewtonOutcome recover(double t, const BdfCoefficients& c, bool fresh, bool lastResort, StepReport& rep);
-  double correctionNorm() const;
 
   Dae& dae_;
   BdfOptions opt_;
   DaeSizes n_;
+  const kernels::StepKernels& kernels_;  // the step's vector work, for n_
   IntegratorState own_;            // the state until bindState
   IntegratorState* st_ = &own_;   // history and counters
   Timers timers_;

@@ -102,7 +102,9 @@ void ClosedFormCar::retract(const integ::Vec& q, const integ::Vec& dq, integ::Ve
   } else {
     mb::jointRetract(chassisJoint_, q.data(), dq.data(), out.data());
   }
-  out.tail(nq_ - chassisQ_) = q.tail(nq_ - chassisQ_) + dq.tail(n_ - chassisV_);
+  // The rest, plain coordinates: a loop (an Eigen tail expression's set-up
+  // costs more than its handful of additions).
+  for (int i = chassisQ_, j = chassisV_; i < nq_; ++i, ++j) out(i) = q(i) + dq(j);
 }
 
 void ClosedFormCar::localCoordinates(const integ::Vec& base, const integ::Vec& q, integ::Vec& out) const {
@@ -112,12 +114,12 @@ void ClosedFormCar::localCoordinates(const integ::Vec& base, const integ::Vec& q
   } else {
     mb::jointLocal(chassisJoint_, base.data(), q.data(), out.data());
   }
-  out.tail(n_ - chassisV_) = q.tail(nq_ - chassisQ_) - base.tail(nq_ - chassisQ_);
+  for (int i = chassisQ_, j = chassisV_; i < nq_; ++i, ++j) out(j) = q(i) - base(i);
 }
 
 void ClosedFormCar::localRate(const integ::Vec& delta, const integ::Vec& v, integ::Vec& out) const {
   mb::jointLocalRate(chassisJoint_, delta.data(), v.data(), out.data());
-  out.tail(n_ - chassisV_) = v.tail(n_ - chassisV_);
+  for (int i = chassisV_; i < n_; ++i) out(i) = v(i);
 }
 
 mb::SignalValue ClosedFormCar::rackInStep(double t) const {
