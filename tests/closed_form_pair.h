@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "integrator/forward_dynamics.h"
@@ -35,16 +36,23 @@ struct Rack final : mb::TimeSignal {
   }
 };
 
-// Both models of one vehicle on level ground, with the same inputs.
+// Both models of one vehicle on level ground (or the terrain given), with
+// the same inputs.
 template <class Car>
 struct Pair {
   const vehicle::Vehicle& v;
-  terrain::PlaneTerrain ground;
+  terrain::PlaneTerrain plane;
+  const terrain::Terrain& ground;
   Rack rack;
   Car car;
   mb::MultibodyDae dae;
   vehicle::VehicleForces forces;
-  explicit Pair(const vehicle::Vehicle& model) : v(model), car(model, ground), dae(model.model), forces(model, ground) {
+  explicit Pair(const vehicle::Vehicle& model, const terrain::Terrain* terrain = nullptr)
+      : v(model),
+        ground(terrain ? *terrain : plane),
+        car(model, ground),
+        dae(model.model),
+        forces(model, ground) {
     car.setRack(&rack);
     dae.addForceProvider(&forces);
     for (int slot = 0; slot < model.model.nDrivers; ++slot) dae.setDriverSignal(slot, &rack);
@@ -236,6 +244,131 @@ void expectSpinColumnsFromTheForceLaws(Pair<Car>& p, const std::vector<State>& s
       // rad/s carry ~1e-6 of the columns' scale; 1e-4 leaves room for that.
       EXPECT_LT(spinPartsError(p, 0.5, q, v, vOther), 1e-4) << "brakes " << brakes;
     }
+}
+
+// The analytic F_q and F_v (Dae::stateJacobian: the equations on dual
+// numbers) against central differences of the residual, a second algorithm:
+// the positions moved along the retraction's tangent directions, the
+// velocities directly. Returns the largest difference of an entry over its
+// column's largest entry (plus one); whether a tyre was saturated or off
+// the ground at the state goes into seen (the cases must include both).
+struct Seen {
+  bool saturated = false, airborne = false;
+};
+// A tyre's peak friction at its load Fz on road friction mu (a Magic
+// Formula's falls with the load: tyre::peakFriction is its largest).
+inline double peakAtLoad(const tyre::TyreParams& t, double Fz, double mu) {
+  if (const auto* pac = std::get_if<tyre::Pac2002Params>(&t)) {
+    const tyre::MagicFormulaForces f = tyre::magicFormula(*pac, 0.0, 0.0, 0.0, Fz, mu);
+    return std::max(std::abs(f.Dx), std::abs(f.Dy)) / Fz;
+  }
+  return tyre::peakFriction(t, mu);
+}
+// The step's ground (its planes, an enveloping tyre's profile) is cast at
+// `predicted` (the state itself when null), as a step's prediction lies
+// off the iterates: an enveloping tyre's profile has a sample under the
+// predicted wheel centre, where its lateral slope has a kink (linear between
+// samples), which differences across would not differentiate.
+template <class Car>
+double stateJacobianError(Pair<Car>& p, double t, const integ::Vec& q, const integ::Vec& v, Seen& seen,
+                          const integ::Vec* predicted = nullptr) {
+  const integ::DaeSizes n = p.car.sizes();
+  integ::Residual r0, rp, rm;
+  r0.resize(n);
+  rp.resize(n);
+  rm.resize(n);
+  integ::Message msg;
+  const integ::Vec a = integ::Vec::LinSpaced(n.nv, -1, 2), lambda;
+  p.car.beginStep(t, predicted ? *predicted : q, v);
+  p.car.forces().markAccepted(t - 0.004);  // inside a step: the brakes' springs and the clutch move with the spins
+  auto residual = [&](const integ::Vec& qs, const integ::Vec& vs, integ::Residual& r) {
+    EXPECT_EQ(p.car.residual(t, qs, vs, a, lambda, r, true, msg), integ::EvalStatus::Ok) << msg.c_str();
+  };
+  residual(q, v, r0);
+  for (int w = 0; w < 4; ++w) {
+    const tyre::TyreOutput& o = p.car.forces().outputs()[w].out;
+    if (!o.inContact || o.Fz < 50.0) seen.airborne = true;
+    const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), centre = p.car.wheelCentre(w);
+    const double mu = p.ground.castRay(centre + up, -up, 3.0).friction;
+    if (o.inContact && o.Fz > 0 && std::hypot(o.Fx, o.Fy) > 0.95 * peakAtLoad(p.v.wheel(w).tyre, o.Fz, mu) * o.Fz)
+      seen.saturated = true;
+  }
+  integ::Mat Fq(n.nv, n.nv), Fv(n.nv, n.nv);
+  EXPECT_TRUE(p.car.stateJacobian(t, q, v, a, Fq, Fv));
+  integ::Mat differencedQ(n.nv, n.nv), differencedV(n.nv, n.nv);
+  integ::Vec dq = integ::Vec::Zero(n.nv), qp(n.nq), qm(n.nq);
+  for (int k = 0; k < n.nv; ++k) {
+    // Central differences extrapolated (Richardson: (4 D(h/2) - D(h)) / 3):
+    // truncation h^4 F^(5), rounding 1e-16 |F| / h. A tyre near its
+    // saturation curves enough that a plain central difference's h^2 F'''
+    // is a few 1e-6 of a column at h = 1e-6.
+    auto central = [&](int k, double h, bool position) -> integ::Vec {
+      if (position) {
+        dq(k) = h;
+        p.car.retract(q, dq, qp);
+        dq(k) = -h;
+        p.car.retract(q, dq, qm);
+        dq(k) = 0;
+        residual(qp, v, rp);
+        residual(qm, v, rm);
+      } else {
+        integ::Vec vp = v, vm = v;
+        vp(k) += h;
+        vm(k) -= h;
+        residual(q, vp, rp);
+        residual(q, vm, rm);
+      }
+      return (rp.F - rm.F) / (2 * h);
+    };
+    const double hq = 1e-6, hv = 1e-6 * std::max(1.0, std::abs(v(k)));
+    differencedQ.col(k) = (4 * central(k, 0.5 * hq, true) - central(k, hq, true)) / 3;
+    differencedV.col(k) = (4 * central(k, 0.5 * hv, false) - central(k, hv, false)) / 3;
+  }
+  // Each column against its own largest entry, but not below a thousandth
+  // of the block's (a column that is zero but for the differences' rounding
+  // of a ~1e4 N residual, ~1e-6, has nothing to be relative to).
+  auto error = [](const integ::Mat& exact, const integ::Mat& differenced) {
+    const double floor = 1e-3 * differenced.cwiseAbs().maxCoeff();
+    double worst = 0;
+    for (int k = 0; k < exact.cols(); ++k)
+      worst = std::max(worst, (exact.col(k) - differenced.col(k)).cwiseAbs().maxCoeff() /
+                                  std::max(floor, differenced.col(k).cwiseAbs().maxCoeff()));
+    return worst;
+  };
+  const double worst = std::max(error(Fq, differencedQ), error(Fv, differencedV));
+  if (std::getenv("BDFCAR_JACOBIAN_TRACE"))
+    for (int i = 0; i < n.nv; ++i)
+      for (int k = 0; k < n.nv; ++k)
+        std::printf("  F%d / q%d %.9g (differenced %.9g), / v%d %.9g (differenced %.9g)\n", i, k, Fq(i, k),
+                    differencedQ(i, k), k, Fv(i, k), differencedV(i, k));
+  residual(q, v, r0);  // the force laws' inputs back at the state
+  return worst;
+}
+
+// stateJacobianError over cases (a state for makeState and the rack's
+// travel), within tolerance each; the rear wheels driven, the brakes on in
+// the second case, the rack moving in the fifth; the states at x (as made
+// where absent), the ground cast predictedAhead behind them. The cases must
+// include a saturated tyre and a wheel in the air.
+template <class Car, class State, class MakeState>
+void expectStateJacobians(Pair<Car>& p, const std::vector<std::pair<State, double>>& cases, MakeState makeState,
+                          double tolerance, std::optional<double> x = std::nullopt, double predictedAhead = 0.0) {
+  Seen seen;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    for (int w = 0; w < 4; ++w) p.inputs(w, w >= 2 ? 300.0 : 0.0, i == 1 ? 800.0 : 0.0);
+    p.rack.travel = cases[i].second;
+    p.rack.rate = i == 4 ? 0.05 : 0.0;
+    integ::Vec q, v;
+    makeState(p.v, cases[i].first, q, v);
+    if (x) q(0) = *x;
+    integ::Vec predicted = q;
+    predicted(0) -= predictedAhead;
+    const double error = stateJacobianError(p, 0.5, q, v, seen, &predicted);
+    std::printf("case %zu: largest difference %.2g of its column\n", i, error);
+    EXPECT_LT(error, tolerance) << "case " << i;
+  }
+  EXPECT_TRUE(seen.saturated);
+  EXPECT_TRUE(seen.airborne);
 }
 
 }  // namespace bdfcar::testing_closed_form

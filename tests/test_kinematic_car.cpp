@@ -13,7 +13,9 @@
 #include "integrator/bdf.h"
 #include "closed_form_pair.h"
 #include "multibody/model_error.h"
+#include "terrain/bullet/bullet_terrain.h"
 #include "terrain/terrain.h"
+#include "terrain/terrain_file.h"
 #include "vehicle/equilibrium.h"
 #include "vehicle/kinematic_car.h"
 #include "vehicle/kinematic_model.h"
@@ -147,6 +149,56 @@ TEST_P(KinematicCarOf, SpinColumnsFromTheForceLawsAreTheResiduals) {
   Pair p(vehicleNamed(GetParam()).vehicle());
   testing_closed_form::expectSpinColumnsFromTheForceLaws(p, std::vector<State>{State{20, 1.5, 0.3, 0.03, -0.01, 0.2, -0.1, 0.025, 0.1, 0.02, 0.3, 0.05},
                                                      State{10, 0.5, 0.2, 0.12, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, makeState);
+}
+
+// The accelerations' cases (straight; cornering, travelling, with the
+// brakes on; sliding, saturated; rolled and high, a wheel in the air) and a
+// slow one (the transient slips blended in) with the rack moving; the drive
+// on the rear wheels and, where the car has one, its clutch slipping.
+// Central differences of a ~1e4 N residual with increments of 1e-6: ~1e-10
+// of a column from rounding, and the truncation of a tyre's curvature: 1e-6
+// leaves room for both and none for a missing term.
+// Straight running has a little slip, sideways and along: the Magic
+// Formula takes signs of its slips (the equivalent slip angle's, the
+// curvature factor's), kinks at zero slip that differences across would not
+// differentiate; a little roll too: the textbook evaluation takes the
+// camber's magnitude. predictedAhead: the ground cast that far behind the state
+// (stateJacobianError).
+void expectStateJacobianIsTheResidualsDerivative(Pair& p, double x, double predictedAhead = 0.0) {
+  const std::vector<std::pair<State, double>> cases = {
+      {{20, 0.05, 0, 0.01, 0, 0, 0, 0.02, 0, 0, 0, 0.01}, 0.0},
+      {{20, 1.5, 0.3, 0.03, -0.01, 0.2, -0.1, 0.025, 0.1, 0.02, 0.3, 0.05}, 0.01},
+      {{15, 4.0, -0.6, -0.05, 0.02, -0.5, 0.3, 0.03, -0.2, -0.03, -0.5, -0.3}, -0.02},
+      {{10, 0.5, 0.2, 0.12, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0},
+      {{1.2, 0.2, 0.1, 0.01, 0.0, 0.0, 0.0, 0.02, 0.0, 0.01, 0.1, 0.1}, 0.01},
+      {{12, 7.0, 1.0, 0.04, 0.01, 0.3, 0.0, 0.03, 0.0, 0.0, 0.0, 0.5}, 0.02},  // sliding further (the Magic Formula's peak lies further out)
+  };
+  testing_closed_form::expectStateJacobians(p, cases, makeState, 1e-6, x, predictedAhead);
+}
+
+TEST_P(KinematicCarOf, StateJacobianIsTheResidualsDerivative) {
+  Pair p(vehicleNamed(GetParam()).vehicle());
+  expectStateJacobianIsTheResidualsDerivative(p, 3.0);
+}
+
+TEST(KinematicCar, StateJacobianOfMagicFormulaTyresIsTheResidualsDerivative) {
+  // PAC2002 as Chrono 9 evaluates it and as the textbook does (camber, the
+  // combined-slip weighting functions, the rolling radius).
+  for (const char* file : {"vehicles/sedan_pac2002_chrono9.toml", "vehicles/sedan_pac2002.toml"}) {
+    const Kinematic k(file, true);
+    Pair p(k.vehicle());
+    expectStateJacobianIsTheResidualsDerivative(p, 3.0);
+  }
+}
+
+TEST(KinematicCar, StateJacobianOnRoughGroundUnderEnvelopingTyresIsTheResidualsDerivative) {
+  // The cams ride on the rough road's profile at the wheel in every
+  // residual (the road inside the step): the contact plane's derivative in
+  // the wheel's position is part of F_q.
+  const Kinematic k("vehicles/sedan_envelope.toml", true);
+  const std::unique_ptr<terrain::Terrain> rough = terrain::makeTerrain(terrain::loadTerrain(asset("terrain/rough.toml")));
+  Pair p(k.vehicle(), rough.get());
+  expectStateJacobianIsTheResidualsDerivative(p, 60.0, 0.0123);
 }
 
 INSTANTIATE_TEST_SUITE_P(Vehicles, KinematicCarOf, ::testing::Values("sedan", "sedan_drive", "paper", "sedan as drawn"),

@@ -190,6 +190,25 @@ TEST_P(PlanarCarOf, SpinColumnsFromTheForceLawsAreTheResiduals) {
                                                      State{10, 0.5, 0.2, 0.2, 0.0, 0.0, 0.0, 0.0}}, makeState);
 }
 
+TEST_P(PlanarCarOf, StateJacobianIsTheResidualsDerivative) {
+  // The accelerations' cases (straight; cornering with the brakes on;
+  // sliding, saturated; rolled far, a wheel in the air) and a slow one (the
+  // transient slips blended in) with the rack moving; the drive on the rear
+  // wheels and, where the car has one, its clutch slipping.
+  Pair p(vehicleNamed(GetParam()).vehicle());
+  const std::vector<std::pair<State, double>> cases = {
+      {{}, 0.0},
+      {{20, 1.5, 0.3, 0.03, -0.01, 0.2, -0.1, 0.05}, 0.01},
+      {{15, 4.0, -0.6, -0.05, 0.02, -0.5, 0.3, -0.3}, -0.02},
+      {{10, 0.5, 0.2, 0.2, 0.0, 0.0, 0.0, 0.0}, 0.0},
+      {{1.2, 0.2, 0.1, 0.01, 0.0, 0.0, 0.0, 0.1}, 0.01},
+  };
+  // Central differences of a ~1e4 N residual with increments of 1e-6:
+  // ~1e-10 of a column from rounding, and the truncation of a tyre's
+  // curvature: 1e-6 leaves room for both and none for a missing term.
+  testing_closed_form::expectStateJacobians(p, cases, makeState, 1e-6);
+}
+
 INSTANTIATE_TEST_SUITE_P(Vehicles, PlanarCarOf, ::testing::Values("sedan", "sedan_drive"));
 
 TEST(PlanarCar, RefusesWhatIsNotAPlanarModel) {

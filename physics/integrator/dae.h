@@ -127,6 +127,14 @@ class Dae {
 
   // Optional analytic blocks; return false to get finite differences.
   virtual bool massMatrix(double /*t*/, const Vec& /*q*/, Mat& /*Fa*/) { return false; }
+  // F_q (along the retraction: column i the change by a tangent increment
+  // e_i) and F_v at (t, q, v, a), right after the residual there (whose
+  // force-law inputs it may take); a DAE that has it has no constraint rows
+  // (their derivative terms stay zero). False: finite differences.
+  virtual bool stateJacobian(double /*t*/, const Vec& /*q*/, const Vec& /*v*/, const Vec& /*a*/, Mat& /*Fq*/,
+                             Mat& /*Fv*/) {
+    return false;
+  }
   virtual bool constraintJacobian(double /*t*/, const Vec& /*q*/, Mat& /*Phi_q*/) { return false; }
 };
 

@@ -6,6 +6,7 @@
 namespace bdfcar::integ {
 
 namespace {
+int constraintRows(const StateDerivatives& d) { return static_cast<int>(d.phiDotQ.rows()); }
 // Forward-difference increments: sqrt(machine epsilon) on unit-scale
 // coordinates (m, rad); velocities scale with their own magnitude.
 constexpr double kFdStep = 1.5e-8;
@@ -92,6 +93,7 @@ EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v,
   ++count;
   if (st != EvalStatus::Ok) return st;
   if (fastParts) dae.fastColumnParts(t, *fastParts);
+  if (constraintRows(out) == 0 && dae.stateJacobian(t, q, v, a, out.Fq, out.Fv)) return EvalStatus::Ok;
   ws.dq.setZero();
   ws.v = v;
   for (int i = 0; i < v.size(); ++i) {

@@ -19,8 +19,9 @@ EvalStatus massMatrixBlock(Dae& dae, double t, const Vec& q, const Vec& v, const
 // Phi_q.
 EvalStatus constraintJacobianBlock(Dae& dae, double t, const Vec& q, Mat& Phi_q, BlockWorkspace& ws,
                                    long& residualCount);
-// Derivatives of the residual by forward differences (2 nv residual
-// evaluations): F_q, F_v, and the constraint-level terms that linearise the
+// Derivatives of the residual (Dae::stateJacobian where the DAE has it and
+// no constraints, else by forward differences: 2 nv residual evaluations):
+// F_q, F_v, and the constraint-level terms that linearise the
 // velocity and acceleration constraints in eqs. 3.12 and 3.14:
 // (Phi_q v + Phi_t)_q, g_q and g_v with g = Phi_q a + (Phi_q v)_q v + Phi_tt.
 struct StateDerivatives {

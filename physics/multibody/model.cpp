@@ -1,5 +1,7 @@
 #include "multibody/model.h"
 
+#include "autodiff.h"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -55,26 +57,33 @@ const char* jointTypeName(JointType t) {
   return "?";
 }
 
-double ForceCurve::eval(double xv) const {
+template <typename T>
+T ForceCurve::eval(const T& xv) const {
   if (x.empty()) return coefficient * xv;
   const size_t n = x.size();
-  if (n == 1) return force[0];
+  if (n == 1) return T(force[0]);
   // Index of the segment holding xv (clamped to the end segments: linear extrapolation).
-  size_t i = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), xv) - x.begin());
+  size_t i = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), ad::value(xv)) - x.begin());
   i = std::clamp<size_t>(i, 1, n - 1);
-  const double s = (xv - x[i - 1]) / (x[i] - x[i - 1]);
+  const T s = (xv - x[i - 1]) / (x[i] - x[i - 1]);
   return force[i - 1] + s * (force[i] - force[i - 1]);
 }
 
-SpringDamper::Parts SpringDamper::parts(double L, double Ldot) const {
-  Parts p;
-  p.spring = preload + spring.eval(freeLength - L);
-  p.damper = damper.eval(-Ldot);
-  p.weight = lumpedWeight;
-  if (bumpLength > 0 && L < bumpLength) p.stop += bumpStiffness * (bumpLength - L);
-  if (reboundLength > 0 && L > reboundLength) p.stop -= reboundStiffness * (L - reboundLength);
+template <typename T>
+SpringDamper::PartsT<T> SpringDamper::parts(const T& L, const T& Ldot) const {
+  PartsT<T> p;
+  p.spring = preload + spring.eval(T(freeLength - L));
+  p.damper = damper.eval(T(-Ldot));
+  p.weight = T(lumpedWeight);
+  if (bumpLength > 0 && ad::value(L) < bumpLength) p.stop += bumpStiffness * (bumpLength - L);
+  if (reboundLength > 0 && ad::value(L) > reboundLength) p.stop -= reboundStiffness * (L - reboundLength);
   return p;
 }
+
+template double ForceCurve::eval(const double&) const;
+template ad::Dual ForceCurve::eval(const ad::Dual&) const;
+template SpringDamper::PartsT<double> SpringDamper::parts(const double&, const double&) const;
+template SpringDamper::PartsT<ad::Dual> SpringDamper::parts(const ad::Dual&, const ad::Dual&) const;
 
 int Model::bodyIndex(const std::string& name) const {
   for (size_t i = 0; i < bodies.size(); ++i)

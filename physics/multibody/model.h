@@ -109,7 +109,9 @@ struct CutJoint {
 struct ForceCurve {
   double coefficient = 0.0;
   std::vector<double> x, force;  // empty = linear
-  double eval(double x) const;
+  // T double or ad::Dual (a closed form's Jacobian, autodiff.h; model.cpp).
+  template <typename T>
+  T eval(const T& x) const;
 };
 
 // Point-to-point spring-damper with optional bump and rebound stops.
@@ -141,12 +143,21 @@ struct SpringDamper {
   // The force (+ = apart) at length L and rate dL/dt, by where it comes
   // from: the spring with its preload, the damper, the bump and rebound
   // stops, and a reduced model's lumped weight.
-  struct Parts {
-    double spring = 0, damper = 0, stop = 0, weight = 0;
-    double total() const { return spring + damper + stop + weight; }
+  // T double or ad::Dual (a closed form's Jacobian, autodiff.h; model.cpp).
+  template <typename T>
+  struct PartsT {
+    T spring = T(0.0), damper = T(0.0), stop = T(0.0), weight = T(0.0);
+    T total() const { return spring + damper + stop + weight; }
   };
-  Parts parts(double length, double lengthRate) const;
-  double force(double length, double lengthRate) const { return parts(length, lengthRate).total(); }
+  using Parts = PartsT<double>;
+  template <typename T>
+  PartsT<T> parts(const T& length, const T& lengthRate) const;
+  template <typename T>
+  T force(const T& length, const T& lengthRate) const {
+    return parts(length, lengthRate).total();
+  }
+  Parts parts(double length, double lengthRate) const { return parts<double>(length, lengthRate); }
+  double force(double length, double lengthRate) const { return parts<double>(length, lengthRate).total(); }
 };
 
 struct Model {

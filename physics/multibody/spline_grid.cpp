@@ -1,5 +1,7 @@
 #include "multibody/spline_grid.h"
 
+#include "autodiff.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -32,13 +34,15 @@ std::vector<double> naturalSplineSlopes(const std::vector<double>& f, double h) 
 
 // Cubic Hermite weights on one cell for the value, first and second
 // derivative: [node 0 value, node 0 slope, node 1 value, node 1 slope].
+template <typename T>
 struct HermiteWeights {
-  std::array<double, 4> w0, w1, w2;
+  std::array<T, 4> w0, w1, w2;
 };
 
-HermiteWeights hermite(double u, double h) {
-  const double u2 = u * u, u3 = u2 * u;
-  HermiteWeights w;
+template <typename T>
+HermiteWeights<T> hermite(const T& u, double h) {
+  const T u2 = u * u, u3 = u2 * u;
+  HermiteWeights<T> w;
   w.w0 = {2 * u3 - 3 * u2 + 1, (u3 - 2 * u2 + u) * h, -2 * u3 + 3 * u2, (u3 - u2) * h};
   w.w1 = {(6 * u2 - 6 * u) / h, 3 * u2 - 4 * u + 1, (-6 * u2 + 6 * u) / h, 3 * u2 - 2 * u};
   w.w2 = {(12 * u - 6) / (h * h), (6 * u - 4) / h, (-12 * u + 6) / (h * h), (6 * u - 2) / h};
@@ -47,16 +51,18 @@ HermiteWeights hermite(double u, double h) {
 
 // A cubic Hermite patch on one cell: weights w (one row of HermiteWeights)
 // against node a's value and slope, then node b's.
-inline double hermiteSum(const std::array<double, 4>& w, const double* a, const double* b) {
+template <typename T>
+inline T hermiteSum(const std::array<T, 4>& w, const double* a, const double* b) {
   return w[0] * a[0] + w[1] * a[1] + w[2] * b[0] + w[3] * b[1];
 }
 
 // Cell index and local coordinate of x, clamped to the grid; ex = distance outside.
-int locate(const GridAxis& a, double x, double& u, double& ex, bool& outside) {
-  const double xc = std::clamp(x, a.start, a.end());
+template <typename T>
+int locate(const GridAxis& a, const T& x, T& u, T& ex, bool& outside) {
+  const T xc = ad::clamp(x, a.start, a.end());
   ex = x - xc;
-  outside = ex != 0.0;
-  const int cell = std::clamp(static_cast<int>(std::floor((xc - a.start) / a.step)), 0, a.nodes - 2);
+  outside = ad::value(ex) != 0.0;
+  const int cell = std::clamp(static_cast<int>(std::floor((ad::value(xc) - a.start) / a.step)), 0, a.nodes - 2);
   u = (xc - (a.start + cell * a.step)) / a.step;
   return cell;
 }
@@ -108,39 +114,41 @@ SplineGrid::SplineGrid(const GridAxis& x, const GridAxis& y, const std::vector<s
   }
 }
 
-void SplineGrid::eval(double x, double y, Sample& out) const {
-  double ux, ex, uy = 0, ey = 0;
+template <typename T>
+void SplineGrid::eval(const T& x, double y, SampleT<T>& out) const {
+  T ux, ex;
+  double uy = 0, ey = 0;
   bool outX, outY = false;
   const int i = locate(x_, x, ux, ex, outX);
-  const HermiteWeights wx = hermite(ux, x_.step);
+  const HermiteWeights<T> wx = hermite(ux, x_.step);
   if (y_.nodes == 1) {
     for (int c = 0; c < components_; ++c) {
       const double* a = node(c, i);
       const double* b = node(c, i + 1);
-      const double g = hermiteSum(wx.w0, a, b), gx = hermiteSum(wx.w1, a, b), gxx = hermiteSum(wx.w2, a, b);
+      const T g = hermiteSum(wx.w0, a, b), gx = hermiteSum(wx.w1, a, b), gxx = hermiteSum(wx.w2, a, b);
       out.f[c] = g + ex * gx;
-      out.grad[c] = {gx, 0.0};
-      out.hess[c] = {outX ? 0.0 : gxx, 0.0, 0.0};
+      out.grad[c] = {gx, T(0.0)};
+      out.hess[c] = {outX ? T(0.0) : gxx, T(0.0), T(0.0)};
     }
     out.outside = outX;
     return;
   }
   const int j = locate(y_, y, uy, ey, outY);
-  const HermiteWeights wy = hermite(uy, y_.step);
+  const HermiteWeights<double> wy = hermite(uy, y_.step);
   // Node (a, b) of the cell, a, b in {0, 1}: its x weights use entries 2a, 2a+1.
   for (int c = 0; c < components_; ++c) {
-    double g = 0, gx = 0, gy = 0, gxx = 0, gxy = 0, gyy = 0;
+    T g = T(0.0), gx = T(0.0), gy = T(0.0), gxx = T(0.0), gxy = T(0.0), gyy = T(0.0);
     for (int b = 0; b < 2; ++b) {
       for (int a = 0; a < 2; ++a) {
         const double* n = node(c, (i + a) + x_.nodes * (j + b));
         // n = f, fx, fy, fxy; x weight for f/fy: w[2a], for fx/fxy: w[2a+1]; y likewise with b.
-        const double vx0 = wx.w0[2 * a], dx0 = wx.w0[2 * a + 1];
-        const double vx1 = wx.w1[2 * a], dx1 = wx.w1[2 * a + 1];
-        const double vx2 = wx.w2[2 * a], dx2 = wx.w2[2 * a + 1];
+        const T &vx0 = wx.w0[2 * a], &dx0 = wx.w0[2 * a + 1];
+        const T &vx1 = wx.w1[2 * a], &dx1 = wx.w1[2 * a + 1];
+        const T &vx2 = wx.w2[2 * a], &dx2 = wx.w2[2 * a + 1];
         const double vy0 = wy.w0[2 * b], dy0 = wy.w0[2 * b + 1];
         const double vy1 = wy.w1[2 * b], dy1 = wy.w1[2 * b + 1];
         const double vy2 = wy.w2[2 * b], dy2 = wy.w2[2 * b + 1];
-        auto term = [&](double X_f, double X_d, double Y_f, double Y_d) {
+        auto term = [&](const T& X_f, const T& X_d, double Y_f, double Y_d) -> T {
           return X_f * Y_f * n[0] + X_d * Y_f * n[1] + X_f * Y_d * n[2] + X_d * Y_d * n[3];
         };
         g += term(vx0, dx0, vy0, dy0);
@@ -152,8 +160,8 @@ void SplineGrid::eval(double x, double y, Sample& out) const {
       }
     }
     out.f[c] = g + ex * gx + ey * gy + ex * ey * gxy;
-    out.grad[c] = {gx + ey * gxy, gy + ex * gxy};
-    out.hess[c] = {outX ? 0.0 : gxx, gxy, outY ? 0.0 : gyy};
+    out.grad[c] = {T(gx + ey * gxy), T(gy + ex * gxy)};
+    out.hess[c] = {outX ? T(0.0) : gxx, gxy, outY ? T(0.0) : gyy};
   }
   out.outside = outX || outY;
 }
@@ -162,7 +170,7 @@ SplineGrid::CurvePoint SplineGrid::curvePoint(double x) const {
   CurvePoint p;
   double u;
   p.cell = locate(x_, x, u, p.ex, p.outside);
-  const HermiteWeights w = hermite(u, x_.step);
+  const HermiteWeights<double> w = hermite(u, x_.step);
   p.w0 = w.w0;
   p.w1 = w.w1;
   p.w2 = w.w2;
@@ -182,18 +190,19 @@ void SplineGrid::evalCurve(const CurvePoint& at, Curve& out) const {
   out.outside = at.outside;
 }
 
-void SplineGrid::eval(double x, double y, RowCache& cache, Sample& out) const {
+template <typename T>
+void SplineGrid::eval(const T& x, double y, RowCache& cache, SampleT<T>& out) const {
   if (y_.nodes == 1) {
     eval(x, y, out);
     return;
   }
-  double ux, ex;
+  T ux, ex;
   bool outX;
   const int i = locate(x_, x, ux, ex, outX);
   if (i != cache.i || y != cache.y || cache.j < 0) {
     double uy;
     const int j = locate(y_, y, uy, cache.ey, cache.outY);
-    const HermiteWeights wy = hermite(uy, y_.step);
+    const HermiteWeights<double> wy = hermite(uy, y_.step);
     const std::array<double, 4>* wk[3] = {&wy.w0, &wy.w1, &wy.w2};
     for (int c = 0; c < components_; ++c)
       for (int a = 0; a < 2; ++a) {
@@ -209,21 +218,26 @@ void SplineGrid::eval(double x, double y, RowCache& cache, Sample& out) const {
     cache.i = i;
     cache.j = j;
   }
-  const HermiteWeights wx = hermite(ux, x_.step);
+  const HermiteWeights<T> wx = hermite(ux, x_.step);
   const double ey = cache.ey;
   for (int c = 0; c < components_; ++c) {
     const std::array<double, 12>& v = cache.values[c];
     // Along x over the y-contracted node values (P: value, Q: x-slope) of y order k.
-    auto along = [&](const std::array<double, 4>& w, int k) {
+    auto along = [&](const std::array<T, 4>& w, int k) -> T {
       return w[0] * v[2 * k] + w[1] * v[2 * k + 1] + w[2] * v[6 + 2 * k] + w[3] * v[6 + 2 * k + 1];
     };
-    const double g = along(wx.w0, 0), gx = along(wx.w1, 0), gy = along(wx.w0, 1);
-    const double gxx = along(wx.w2, 0), gxy = along(wx.w1, 1), gyy = along(wx.w0, 2);
+    const T g = along(wx.w0, 0), gx = along(wx.w1, 0), gy = along(wx.w0, 1);
+    const T gxx = along(wx.w2, 0), gxy = along(wx.w1, 1), gyy = along(wx.w0, 2);
     out.f[c] = g + ex * gx + ey * gy + ex * ey * gxy;
-    out.grad[c] = {gx + ey * gxy, gy + ex * gxy};
-    out.hess[c] = {outX ? 0.0 : gxx, gxy, cache.outY ? 0.0 : gyy};
+    out.grad[c] = {T(gx + ey * gxy), T(gy + ex * gxy)};
+    out.hess[c] = {outX ? T(0.0) : gxx, gxy, cache.outY ? T(0.0) : gyy};
   }
   out.outside = outX || cache.outY;
 }
+
+template void SplineGrid::eval(const double&, double, SampleT<double>&) const;
+template void SplineGrid::eval(const ad::Dual&, double, SampleT<ad::Dual>&) const;
+template void SplineGrid::eval(const double&, double, RowCache&, SampleT<double>&) const;
+template void SplineGrid::eval(const ad::Dual&, double, RowCache&, SampleT<ad::Dual>&) const;
 
 }  // namespace bdfcar::mb

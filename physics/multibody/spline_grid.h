@@ -28,13 +28,17 @@ class SplineGrid {
  public:
   static constexpr int kMaxComponents = 12;
 
-  // One value of the function (every component) and its derivatives.
-  struct Sample {
-    std::array<double, kMaxComponents> f{};
-    std::array<std::array<double, 2>, kMaxComponents> grad{};  // d/dx, d/dy
-    std::array<std::array<double, 3>, kMaxComponents> hess{};  // xx, xy, yy
-    bool outside = false;                                        // beyond the grid
+  // One value of the function (every component) and its derivatives; T
+  // double, or ad::Dual (autodiff.h) where x is a dual number (a closed
+  // form's Jacobian: the derivatives' own derivatives along x follow).
+  template <typename T>
+  struct SampleT {
+    std::array<T, kMaxComponents> f{};
+    std::array<std::array<T, 2>, kMaxComponents> grad{};  // d/dx, d/dy
+    std::array<std::array<T, 3>, kMaxComponents> hess{};  // xx, xy, yy
+    bool outside = false;                                   // beyond the grid
   };
+  using Sample = SampleT<double>;
 
   SplineGrid() = default;
   // samples[c][i + x.nodes * j]: component c at node (i, j); for one
@@ -46,8 +50,10 @@ class SplineGrid {
   const GridAxis& axisX() const { return x_; }
   const GridAxis& axisY() const { return y_; }
 
-  // Every component at (x, y); y is ignored for one coordinate. No allocation.
-  void eval(double x, double y, Sample& out) const;
+  // Every component at (x, y); y is ignored for one coordinate. No
+  // allocation. T double or ad::Dual (spline_grid.cpp).
+  template <typename T>
+  void eval(const T& x, double y, SampleT<T>& out) const;
 
   // One coordinate (dimensions() == 1) along x: where x is on the axis (its
   // cell and the cubic's weights there), which serves every grid on an equal
@@ -81,7 +87,8 @@ class SplineGrid {
     // derivative (0, 1, 2): the y-contracted value and x-slope.
     std::array<std::array<double, 12>, kMaxComponents> values{};
   };
-  void eval(double x, double y, RowCache& cache, Sample& out) const;
+  template <typename T>
+  void eval(const T& x, double y, RowCache& cache, SampleT<T>& out) const;
 
  private:
   // Node data of component c at node n: f, fx, fy, fxy.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 
+#include "autodiff.h"
 #include "tyre/tyre.h"
 
 namespace bdfcar::tyre {
@@ -20,28 +21,32 @@ namespace bdfcar::tyre {
 inline constexpr double kContactSmoothing = 10.0;   // N
 inline constexpr double kAirborneClearance = 0.01;  // m above the ground: no contact at all
 
-struct ContactGeometry {
-  Vec3 xc, yc;         // heading and its left in the ground plane
-  Vec3 down;           // down in the wheel plane (n x x_c)
-  double delta = 0;    // the disc's penetration, m
-  double vx = 0, vy = 0, vz = 0;  // wheel-centre velocity in the contact frame
+template <typename T>
+struct ContactGeometryT {
+  Vec3T<T> xc, yc;         // heading and its left in the ground plane
+  Vec3T<T> down;           // down in the wheel plane (n x x_c)
+  T delta = T(0.0);        // the disc's penetration, m
+  T vx = T(0.0), vy = T(0.0), vz = T(0.0);  // wheel-centre velocity in the contact frame
 };
+using ContactGeometry = ContactGeometryT<double>;
 
 // nullopt: no ground, the centre below it, or the wheel lying flat.
-inline std::optional<ContactGeometry> contactGeometry(const WheelKinematics& w, const ContactPlane& g, double R0) {
+template <typename T>
+inline std::optional<ContactGeometryT<T>> contactGeometry(const WheelKinematicsT<T>& w, const ContactPlaneT<T>& g,
+                                                          double R0) {
   if (!g.valid) return std::nullopt;
-  const Vec3& n = w.spinAxis;
-  const Vec3& ez = g.normal;
-  const Vec3 nxz = n.cross(ez);
-  const double heightOfCentre = (w.centre - g.point).dot(ez);
-  if (nxz.squaredNorm() < 1e-3 || heightOfCentre <= 0) return std::nullopt;
-  ContactGeometry c;
+  const Vec3T<T>& n = w.spinAxis;
+  const Vec3T<T>& ez = g.normal;
+  const Vec3T<T> nxz = n.cross(ez);
+  const T heightOfCentre = (w.centre - g.point).dot(ez);
+  if (ad::value(nxz.squaredNorm()) < 1e-3 || ad::value(heightOfCentre) <= 0) return std::nullopt;
+  ContactGeometryT<T> c;
   c.xc = nxz.normalized();
   c.down = n.cross(c.xc);
-  const Vec3 bottom = w.centre + R0 * c.down;
+  const Vec3T<T> bottom = w.centre + R0 * c.down;
   c.delta = (g.point - bottom).dot(ez);
   c.yc = ez.cross(c.xc);
-  const Vec3& v = w.centreVelocity;
+  const Vec3T<T>& v = w.centreVelocity;
   c.vx = v.dot(c.xc);
   c.vy = v.dot(c.yc);
   c.vz = v.dot(ez);
@@ -51,9 +56,12 @@ inline std::optional<ContactGeometry> contactGeometry(const WheelKinematics& w, 
 // The normal load from `raw` (spring and damper, or a load the model
 // gives: `given`), its zero corner rounded; nullopt when the wheel is
 // clear of the ground.
-inline std::optional<double> smoothedLoad(double raw, double delta, bool given) {
-  if ((!given && delta <= -kAirborneClearance) || raw < -1e3 * kContactSmoothing) return std::nullopt;
-  return 0.5 * (raw + std::sqrt(raw * raw + kContactSmoothing * kContactSmoothing));
+template <typename T>
+inline std::optional<T> smoothedLoad(const T& raw, const T& delta, bool given) {
+  using std::sqrt;
+  if ((!given && ad::value(delta) <= -kAirborneClearance) || ad::value(raw) < -1e3 * kContactSmoothing)
+    return std::nullopt;
+  return T(0.5 * (raw + sqrt(raw * raw + kContactSmoothing * kContactSmoothing)));
 }
 
 }  // namespace bdfcar::tyre

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "autodiff.h"
+
 namespace bdfcar::tyre {
 
 double staticContactLength(double R0, double kz, double load) {
@@ -24,13 +26,20 @@ Envelope resolveEnvelope(const EnvelopeSpec& s, double R0, double kz, double sta
 
 namespace {
 
+// The functions below take the cam's position s as a scalar type T (double
+// on the step's path, ad::Dual for a closed form's Jacobian): the profile's
+// samples are data, the cams' heights and slopes functions of s.
+
 // The cam's lower contour below its centre at u = x / a: b (1 - g(u)), with
 // g = (1 - |u|^c)^(1/c). Returned: -b (1 - g), the contour's height over
 // its lowest point (<= 0).
-double contourRise(const Envelope& e, double u) {
-  if (e.c == 2.0) return e.b * (std::sqrt(std::max(0.0, 1.0 - u * u)) - 1.0);
-  const double x = std::pow(std::abs(u), e.c);
-  return e.b * (std::pow(std::max(0.0, 1.0 - x), 1.0 / e.c) - 1.0);
+template <typename T>
+T contourRise(const Envelope& e, const T& u) {
+  using std::abs;
+  using std::pow;
+  if (e.c == 2.0) return e.b * (ad::sqrt0(ad::max(0.0, T(1.0 - u * u))) - 1.0);
+  const T x = pow(T(abs(u)), e.c);
+  return e.b * (pow(ad::max(0.0, T(1.0 - x)), 1.0 / e.c) - 1.0);
 }
 
 // An upper bound of contourRise: 1 - (1 - x)^(1/c) >= x / c for x in [0, 1].
@@ -42,12 +51,18 @@ double contourRiseBound(const Envelope& e, double u) {
 // The cam's support function in direction (a m, b): the dual norm of the
 // superellipse's, exponent q = c / (c - 1). Resting on a line of slope m the
 // cam's lowest point stands this less b above the line under its centre.
-double support(const Envelope& e, double m) {
-  if (e.c == 2.0) return std::hypot(e.a * m, e.b);
-  return std::pow(std::pow(std::abs(e.a * m), e.dual) + std::pow(e.b, e.dual), 1.0 / e.dual);
+template <typename T>
+T support(const Envelope& e, const T& m) {
+  using std::abs;
+  using std::pow;
+  if (e.c == 2.0) return ad::hypot(T(e.a * m), T(e.b));
+  return pow(T(pow(T(abs(T(e.a * m))), e.dual) + std::pow(e.b, e.dual)), 1.0 / e.dual);
 }
 
-double slopeOffset(const Envelope& e, double m) { return m == 0.0 ? 0.0 : support(e, m) - e.b; }
+template <typename T>
+T slopeOffset(const Envelope& e, const T& m) {
+  return ad::value(m) == 0.0 ? T(0.0) : T(support(e, m) - e.b);
+}
 
 // Where on the cam (u = x / a) its contour has slope m: the support
 // function's maximiser, sign(m) |a m|^(q-1) / support^(q-1).
@@ -69,37 +84,40 @@ void findLine(RoadProfile& p) {
   p.slope = m;
 }
 
-double camHeight(const Envelope& e, const RoadProfile& p, double s) {
+template <typename T>
+T camHeight(const Envelope& e, const RoadProfile& p, const T& sT) {
+  const double s = ad::value(sT);
   // On a straight road the cam stands its support function less b above it.
   if (p.linear && s - e.a >= p.s0 && s + e.a <= p.s0 + (p.n - 1) * p.ds)
-    return p.z[0] + p.slope * (s - p.s0) + slopeOffset(e, p.slope);
+    return p.z[0] + p.slope * (sT - p.s0) + slopeOffset(e, p.slope);
   // The cam rests on the profile, linear between its samples: its lowest
   // point as high as any point of the road under it asks. On a segment the
   // highest such point is where the contour's slope is the segment's (when
   // that falls inside it, in closed form: the support function) or an end
   // (a sample: z_k plus the contour's rise there). Exact for the piecewise
   // linear road, so a level or evenly sloped road reads without a ripple
-  // between samples.
+  // between samples. The bounds and the choice of the highest by value: a
+  // Dual s carries the derivative of the term that wins.
   const int lo = std::max(0, static_cast<int>(std::ceil((s - e.a - p.s0) / p.ds)));
   const int hi = std::min(p.n - 1, static_cast<int>(std::floor((s + e.a - p.s0) / p.ds)));
-  if (lo > hi) return RoadProfile::kNoGround;
+  if (lo > hi) return T(RoadProfile::kNoGround);
   // The samples around the cam's centre first: the bounds then skip most others.
   const int mid = std::clamp(static_cast<int>(std::floor((s - p.s0) / p.ds)), lo, hi);
   const double inv = 1.0 / e.a;
-  double best = RoadProfile::kNoGround;
+  T best = T(RoadProfile::kNoGround);
   const auto sample = [&](int k) {
-    if (p.z[k] <= best) return;  // the rise is never positive
+    if (p.z[k] <= ad::value(best)) return;  // the rise is never positive
     const double u = (p.s0 + k * p.ds - s) * inv;
-    if (p.z[k] + contourRiseBound(e, u) <= best) return;
-    best = std::max(best, p.z[k] + contourRise(e, u));
+    if (p.z[k] + contourRiseBound(e, u) <= ad::value(best)) return;
+    best = ad::max(best, T(p.z[k] + contourRise(e, T((p.s0 + k * p.ds - sT) * inv))));
   };
   const auto segment = [&](int k) {  // from sample k to k + 1, both under the cam
     const double z0 = p.z[k], z1 = p.z[k + 1];
-    if (std::max(z0, z1) <= best || std::min(z0, z1) <= 0.5 * RoadProfile::kNoGround) return;
+    if (std::max(z0, z1) <= ad::value(best) || std::min(z0, z1) <= 0.5 * RoadProfile::kNoGround) return;
     const double m = (z1 - z0) / p.ds, sup = support(e, m);
     const double x = s + e.a * tangentPoint(e, m, sup) - (p.s0 + k * p.ds);  // the tangent point along the segment
     if (x < 0 || x > p.ds) return;
-    best = std::max(best, z0 + m * (s - (p.s0 + k * p.ds)) + sup - e.b);
+    best = ad::max(best, T(z0 + m * (sT - (p.s0 + k * p.ds)) + sup - e.b));
   };
   sample(mid);
   if (mid + 1 <= hi) {
@@ -113,40 +131,49 @@ double camHeight(const Envelope& e, const RoadProfile& p, double s) {
   return best;
 }
 
-bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre, EffectiveRoad& out) {
+template double camHeight(const Envelope&, const RoadProfile&, const double&);
+
+template <typename T>
+bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Vec3T<T>& centre, EffectiveRoadT<T>& out) {
   if (!p.valid) return false;
-  const Eigen::Vector2d r = centre.head<2>() - p.origin;
-  const double s = r.dot(p.heading);
+  const Eigen::Matrix<T, 2, 1> r = centre.template head<2>() - p.origin;
+  const T s = r.dot(p.heading);
   // A wheel far off its step's profile (or a diverged state) finds no road.
-  if (!(std::abs(s) < 1e3)) return false;
-  const double lateral = p.heading.x() * r.y() - p.heading.y() * r.x();  // to the heading's left
-  const double front = camHeight(e, p, s + 0.5 * e.base);
-  const double rear = camHeight(e, p, s - 0.5 * e.base);
-  const bool hasFront = front > 0.5 * RoadProfile::kNoGround, hasRear = rear > 0.5 * RoadProfile::kNoGround;
+  if (!(std::abs(ad::value(s)) < 1e3)) return false;
+  const T lateral = p.heading.x() * r.y() - p.heading.y() * r.x();  // to the heading's left
+  const T front = camHeight(e, p, T(s + 0.5 * e.base));
+  const T rear = camHeight(e, p, T(s - 0.5 * e.base));
+  const bool hasFront = ad::value(front) > 0.5 * RoadProfile::kNoGround;
+  const bool hasRear = ad::value(rear) > 0.5 * RoadProfile::kNoGround;
   if (!hasFront && !hasRear) return false;
   // One cam over a void (a wheel rolling off an edge): the other alone, level.
-  const double slope = hasFront && hasRear ? (front - rear) / e.base : 0.0;
-  const double mean = hasFront && hasRear ? 0.5 * (front + rear) : (hasFront ? front : rear);
+  const T slope = hasFront && hasRear ? T((front - rear) / e.base) : T(0.0);
+  const T mean = hasFront && hasRear ? T(0.5 * (front + rear)) : (hasFront ? front : rear);
   // The lateral slope where the wheel is, between the profile's samples.
-  const double x = std::clamp((s - p.s0) / p.ds, 0.0, static_cast<double>(p.n - 1));
-  const int k = std::min(static_cast<int>(x), p.n - 2);
-  const double f = x - k;
-  out.lateralSlope = p.n > 1 ? (1 - f) * p.cross[k] + f * p.cross[k + 1] : p.cross[0];
+  const T x = ad::clamp(T((s - p.s0) / p.ds), 0.0, static_cast<double>(p.n - 1));
+  const int k = std::min(static_cast<int>(ad::value(x)), p.n - 2);
+  const T f = x - k;
+  out.lateralSlope = p.n > 1 ? T((1 - f) * p.cross[k] + f * p.cross[k + 1]) : T(p.cross[0]);
   out.forwardSlope = slope;
   out.height = mean - slopeOffset(e, slope) + out.lateralSlope * lateral;
   return true;
 }
 
-ContactPlane effectivePlane(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre) {
-  ContactPlane plane;
-  EffectiveRoad road;
+template <typename T>
+ContactPlaneT<T> effectivePlane(const Envelope& e, const RoadProfile& p, const Vec3T<T>& centre) {
+  ContactPlaneT<T> plane;
+  EffectiveRoadT<T> road;
   if (!effectiveRoad(e, p, centre, road)) return plane;
   plane.valid = true;
-  plane.point = Eigen::Vector3d(centre.x(), centre.y(), road.height);
+  plane.point = Vec3T<T>(centre.x(), centre.y(), road.height);
   const Eigen::Vector3d forward(p.heading.x(), p.heading.y(), 0), left(-p.heading.y(), p.heading.x(), 0);
-  plane.normal = (Eigen::Vector3d::UnitZ() - road.forwardSlope * forward - road.lateralSlope * left).normalized();
+  plane.normal = (Vec3T<T>(Eigen::Vector3d::UnitZ()) - road.forwardSlope * forward - road.lateralSlope * left).normalized();
   plane.friction = p.friction;
   return plane;
 }
+
+template bool effectiveRoad(const Envelope&, const RoadProfile&, const Vec3T<double>&, EffectiveRoadT<double>&);
+template ContactPlaneT<double> effectivePlane(const Envelope&, const RoadProfile&, const Vec3T<double>&);
+template ContactPlaneT<ad::Dual> effectivePlane(const Envelope&, const RoadProfile&, const Vec3T<ad::Dual>&);
 
 }  // namespace bdfcar::tyre

@@ -81,19 +81,33 @@ struct RoadProfile {
 
 // The height of a cam's lowest point when the cam, centred at s along the
 // profile, rests on it; kNoGround where no sample lies under it.
-double camHeight(const Envelope& e, const RoadProfile& p, double s);
+// T double or ad::Dual (envelope.cpp).
+template <typename T>
+T camHeight(const Envelope& e, const RoadProfile& p, const T& s);
+inline double camHeight(const Envelope& e, const RoadProfile& p, double s) { return camHeight<double>(e, p, s); }
 // Marks p linear where its samples are all ground on one line.
 void findLine(RoadProfile& p);
 
 // The effective road height, forward and lateral slope under a wheel centre
 // (world); false where neither cam finds ground.
-struct EffectiveRoad {
-  double height = 0, forwardSlope = 0, lateralSlope = 0;
+template <typename T>
+struct EffectiveRoadT {
+  T height = T(0.0), forwardSlope = T(0.0), lateralSlope = T(0.0);
 };
-bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre, EffectiveRoad& out);
+using EffectiveRoad = EffectiveRoadT<double>;
+template <typename T>
+bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Vec3T<T>& centre, EffectiveRoadT<T>& out);
+inline bool effectiveRoad(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre, EffectiveRoad& out) {
+  return effectiveRoad<double>(e, p, centre, out);
+}
 
 // The same as the plane the tyre models read: through the effective height
 // under the centre, normal to the effective slopes.
-ContactPlane effectivePlane(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre);
+// T double or ad::Dual (a closed form's Jacobian: the plane's derivative in the centre).
+template <typename T>
+ContactPlaneT<T> effectivePlane(const Envelope& e, const RoadProfile& p, const Vec3T<T>& centre);
+inline ContactPlane effectivePlane(const Envelope& e, const RoadProfile& p, const Eigen::Vector3d& centre) {
+  return effectivePlane<double>(e, p, centre);
+}
 
 }  // namespace bdfcar::tyre

@@ -33,20 +33,27 @@ struct FialaParams {
   EnvelopeSpec contact;
 };
 
-struct PatchForces {
-  double Fx = 0, Fy = 0, Mz = 0;
+template <typename T>
+struct PatchForcesT {
+  T Fx = T(0.0), Fy = T(0.0), Mz = T(0.0);
 };
+using PatchForces = PatchForcesT<double>;
 
 // The Fiala patch force law (FialaPatchForces in the spec) for slips kappa and
 // alpha, normal load Fz and terrain friction mu (clamped to [0.1, 1]).
 PatchForces fialaPatchForces(const FialaParams& p, double kappa, double alpha, double Fz, double mu);
+// The same in kappa and tan(alpha), for double and ad::Dual (fiala.cpp).
+template <typename T>
+PatchForcesT<T> fialaPatchForcesTan(const FialaParams& p, const T& kappa, const T& tanA, const T& Fz, double mu);
 
 class FialaTyre {
  public:
   explicit FialaTyre(const FialaParams& p) : p_(p) {}
-  // Into out, every field of it (the step's path: no output copied).
-  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
-                std::optional<double> load, TyreOutput& out) const;
+  // Into out, every field of it (the step's path: no output copied); T
+  // double or ad::Dual (a closed form's Jacobian, autodiff.h).
+  template <typename T>
+  void evaluate(const WheelKinematicsT<T>& wheel, const ContactPlaneT<T>& ground, const SlipState& previous, double h,
+                std::optional<T> load, TyreOutputT<T>& out) const;
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
                       double h, std::optional<double> load = std::nullopt) const {
     TyreOutput out;

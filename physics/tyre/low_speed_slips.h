@@ -14,6 +14,7 @@
 
 #include <algorithm>
 
+#include "autodiff.h"
 #include "tyre/tyre.h"
 
 namespace bdfcar::tyre {
@@ -31,17 +32,20 @@ struct LowSpeedSlipSpec {
 
 // Weight of the exact slips against the transient ones at forward speed |vx|:
 // 0 below blend0, 1 above blend1, C1-smooth in between.
-inline double exactSlipWeight(const LowSpeedSlipSpec& s, double absVx) {
-  if (absVx <= s.blend0) return 0.0;
-  if (absVx >= s.blend1) return 1.0;
-  const double x = (absVx - s.blend0) / (s.blend1 - s.blend0);
-  return x * x * (3.0 - 2.0 * x);
+template <typename T>
+inline T exactSlipWeight(const LowSpeedSlipSpec& s, const T& absVx) {
+  if (ad::value(absVx) <= s.blend0) return T(0.0);
+  if (ad::value(absVx) >= s.blend1) return T(1.0);
+  const T x = (absVx - s.blend0) / (s.blend1 - s.blend0);
+  return T(x * x * (3.0 - 2.0 * x));
 }
 
-struct BlendedSlips {
-  double kappa = 0, tanAlpha = 0;
-  SlipState next;
+template <typename T>
+struct BlendedSlipsT {
+  T kappa = T(0.0), tanAlpha = T(0.0);
+  SlipState next;  // the transient slips' values (a state: no derivative)
 };
+using BlendedSlips = BlendedSlipsT<double>;
 
 // The slips at weight beta < 1 (exactSlipWeight): sx, sy the relaxation
 // lengths at this load; limX, limY the transient slips' bounds (where the
@@ -49,23 +53,27 @@ struct BlendedSlips {
 // friction force); stiffX, stiffY the law's slip stiffnesses (N per unit
 // slip), which turn the damping into slip; denom the exact slips'
 // denominator (|vx| held at blend0 or above, plus a model's own softening).
-inline BlendedSlips lowSpeedSlips(const LowSpeedSlipSpec& s, double beta, double vsx, double vsy, double absVx,
-                                  const SlipState& prev, double h, double sx, double sy, double limX, double limY,
-                                  double stiffX, double stiffY, double denom) {
-  BlendedSlips out;
+template <typename T>
+inline BlendedSlipsT<T> lowSpeedSlips(const LowSpeedSlipSpec& s, const T& beta, const T& vsx, const T& vsy,
+                                      const T& absVx, const SlipState& prev, double h, const T& sx, const T& sy,
+                                      const T& limX, const T& limY, const T& stiffX, const T& stiffY,
+                                      const T& denom) {
+  BlendedSlipsT<T> out;
   out.next = prev;
-  SlipState from = prev;
+  T fromKappa = T(prev.kappa), fromTanAlpha = T(prev.tanAlpha);
   if (!prev.active) {
-    from.kappa = -vsx / denom;
-    from.tanAlpha = vsy / denom;
+    fromKappa = -vsx / denom;
+    fromTanAlpha = vsy / denom;
   }
-  out.next.kappa = std::clamp((from.kappa - h * vsx / sx) / (1.0 + h * absVx / sx), -limX, limX);
-  out.next.tanAlpha = std::clamp((from.tanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy), -limY, limY);
+  const T nextKappa = ad::clamp(T((fromKappa - h * vsx / sx) / (1.0 + h * absVx / sx)), T(-limX), limX);
+  const T nextTanAlpha = ad::clamp(T((fromTanAlpha + h * vsy / sy) / (1.0 + h * absVx / sy)), T(-limY), limY);
+  out.next.kappa = ad::value(nextKappa);
+  out.next.tanAlpha = ad::value(nextTanAlpha);
   out.next.active = true;
-  const double dampX = -s.dampingX * vsx / stiffX;
-  const double dampY = s.dampingY * vsy / stiffY;
-  out.kappa = beta * (-vsx / denom) + (1.0 - beta) * (out.next.kappa + dampX);
-  out.tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (out.next.tanAlpha + dampY);
+  const T dampX = -s.dampingX * vsx / stiffX;
+  const T dampY = s.dampingY * vsy / stiffY;
+  out.kappa = beta * (-vsx / denom) + (1.0 - beta) * (nextKappa + dampX);
+  out.tanAlpha = beta * (vsy / denom) + (1.0 - beta) * (nextTanAlpha + dampY);
   return out;
 }
 

@@ -73,17 +73,25 @@ struct Pac2002Params {
 // in the variant's own frame and sign convention (Chrono9: alpha is its
 // alpha_c, the outputs its internal ones, tyre-pac2002.md 3): the check
 // values of the spec and the textbook's closed-form limits are stated there.
-struct MagicFormulaForces {
-  double Fx = 0, Fy = 0, Mz = 0, Mx = 0, My = 0;
-  double Kx = 0, Ky = 0;     // slip stiffnesses at the load (N, N/rad)
-  double Dx = 0, Dy = 0;     // peak factors (N)
+template <typename T>
+struct MagicFormulaForcesT {
+  T Fx = T(0.0), Fy = T(0.0), Mz = T(0.0), Mx = T(0.0), My = T(0.0);
+  T Kx = T(0.0), Ky = T(0.0);  // slip stiffnesses at the load (N, N/rad)
+  T Dx = T(0.0), Dy = T(0.0);  // peak factors (N)
 };
+using MagicFormulaForces = MagicFormulaForcesT<double>;
 // mu: the road's friction (scales the peak factors by mu / referenceFriction);
 // vx: forward speed for the rolling resistance. p's coefficients are used as
 // they are: a tyre mounted on the other side from TYRESIDE needs
 // mountedCoefficients(p) first (Pac2002Tyre's constructor does that).
-MagicFormulaForces magicFormula(const Pac2002Params& p, double kappa, double alpha, double gamma, double Fz,
-                                double mu, double vx = 0.0);
+// For T double and ad::Dual (pac2002.cpp).
+template <typename T>
+MagicFormulaForcesT<T> magicFormula(const Pac2002Params& p, const T& kappa, const T& alpha, const T& gamma,
+                                    const T& Fz, double mu, const T& vx = T(0.0));
+inline MagicFormulaForces magicFormula(const Pac2002Params& p, double kappa, double alpha, double gamma, double Fz,
+                                       double mu, double vx = 0.0) {
+  return magicFormula<double>(p, kappa, alpha, gamma, Fz, mu, vx);
+}
 
 // The mirrored coefficients of a tyre mounted on the other side from TYRESIDE.
 Pac2002Coefficients mountedCoefficients(const Pac2002Params& p);
@@ -94,9 +102,11 @@ double pac2002PeakFriction(const Pac2002Params& p, double mu);
 class Pac2002Tyre {
  public:
   explicit Pac2002Tyre(const Pac2002Params& p);
-  // Into out, every field of it (the step's path: no output copied).
-  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
-                std::optional<double> load, TyreOutput& out) const;
+  // Into out, every field of it (the step's path: no output copied); T
+  // double or ad::Dual (a closed form's Jacobian, autodiff.h).
+  template <typename T>
+  void evaluate(const WheelKinematicsT<T>& wheel, const ContactPlaneT<T>& ground, const SlipState& previous, double h,
+                std::optional<T> load, TyreOutputT<T>& out) const;
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
                       std::optional<double> load = std::nullopt) const {
     TyreOutput out;

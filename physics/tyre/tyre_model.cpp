@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "autodiff.h"
 #include "portable_math.h"
 
 namespace bdfcar::tyre {
 
-double TyreOutput::slipAngle() const { return pm::atan(tanAlpha); }
+template <>
+double TyreOutput::slipAngle() const {
+  return pm::atan(tanAlpha);
+}
 
 double unloadedRadius(const TyreParams& p) {
   return std::visit([](const auto& m) { return m.unloadedRadius; }, p);
@@ -58,12 +62,18 @@ TyreOutput Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& grou
   return out;
 }
 
-void Tyre::evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
-                    std::optional<double> load, TyreOutput& out) const {
+template <typename T>
+void Tyre::evaluate(const WheelKinematicsT<T>& wheel, const ContactPlaneT<T>& ground, const SlipState& previous,
+                    double h, std::optional<T> load, TyreOutputT<T>& out) const {
   if (const FialaTyre* fiala = std::get_if<FialaTyre>(&model_))
     fiala->evaluate(wheel, ground, previous, h, load, out);
   else
     std::get<Pac2002Tyre>(model_).evaluate(wheel, ground, previous, h, load, out);
 }
+
+template void Tyre::evaluate(const WheelKinematicsT<double>&, const ContactPlaneT<double>&, const SlipState&, double,
+                             std::optional<double>, TyreOutputT<double>&) const;
+template void Tyre::evaluate(const WheelKinematicsT<ad::Dual>&, const ContactPlaneT<ad::Dual>&, const SlipState&,
+                             double, std::optional<ad::Dual>, TyreOutputT<ad::Dual>&) const;
 
 }  // namespace bdfcar::tyre

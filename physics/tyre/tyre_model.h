@@ -37,9 +37,11 @@ class Tyre {
   explicit Tyre(const TyreParams& p);
   TyreOutput evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous,
                       double h, std::optional<double> load = std::nullopt) const;
-  // The same into out, every field of it (the step's path: no output copied).
-  void evaluate(const WheelKinematics& wheel, const ContactPlane& ground, const SlipState& previous, double h,
-                std::optional<double> load, TyreOutput& out) const;
+  // The same into out, every field of it (the step's path: no output
+  // copied); T double or ad::Dual (a closed form's Jacobian, autodiff.h).
+  template <typename T>
+  void evaluate(const WheelKinematicsT<T>& wheel, const ContactPlaneT<T>& ground, const SlipState& previous, double h,
+                std::optional<T> load, TyreOutputT<T>& out) const;
   double unloadedRadius() const { return radius_; }
 
  private:

@@ -85,6 +85,103 @@ void ClosedFormCar::addSpinChange(int w, double dv, double per, double h, const 
   for (int u : driven) addDriveTorque(u, (T1.drive[u] - T0.drive[u]) / per, col);
 }
 
+integ::EvalStatus ClosedFormCar::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                                          const integ::Vec&, integ::Residual& out, bool, integ::Message& msg) {
+  equationsOf(t, q.data(), v.data(), a, out.F.data());
+  if (!out.F.allFinite()) {
+    msg.set("non-finite equations of motion at t = %.6g s", t);
+    return integ::EvalStatus::Recoverable;
+  }
+  return integ::EvalStatus::Ok;
+}
+
+bool ClosedFormCar::stateJacobian(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                                  integ::Mat& Fq, integ::Mat& Fv) {
+  constexpr int kMaxV = 16, kMaxQ = kMaxV + 1;
+  if (n_ > kMaxV || nq_ > kMaxQ) return false;
+  // The directions: the positions' tangent increments (their columns of
+  // F_q) but those the equations do not read (the wheels' and the crank's
+  // angles: their columns are zero), then the velocities (F_v); as many
+  // per evaluation as a Dual carries.
+  std::array<int, 2 * kMaxV> direction{};
+  int count = 0;
+  for (int j = 0; j < n_; ++j)
+    if (!angleOnly(j)) direction[count++] = j;
+  for (int j = 0; j < n_; ++j) direction[count++] = n_ + j;
+  Fq.setZero(n_, n_);
+  Fv.setZero(n_, n_);
+  // The retraction's tangent at dq = 0 for the chassis' joint: the
+  // derivative of its position coordinate i along tangent direction j
+  // (mb::jointRetract); the other coordinates are plain (q_i + dq_i).
+  Eigen::Matrix<double, 7, 6> chassis = Eigen::Matrix<double, 7, 6>::Zero();
+  if (chassisJoint_ == mb::JointType::Planar) {
+    // (x, y) + Rz(yaw) dq_xy, yaw + dq_yaw.
+    const pm::SinCos& r = baseHeading(q(2));
+    chassis.topLeftCorner<3, 3>() << r.c, -r.s, 0, r.s, r.c, 0, 0, 0, 1;
+  } else {
+    // The free joint: p + R dq_lin; the quaternion (w, u) times exp(dq_ang),
+    // to first order (w, u) (1, dq_ang / 2): along e_k, dw = -u_k / 2,
+    // du = (w e_k + u x e_k) / 2.
+    chassis.topLeftCorner<3, 3>() = mb::quatToMatrix(q.data() + 3);
+    const double w = q(3);
+    const Vec3 u(q(4), q(5), q(6));
+    for (int k = 0; k < 3; ++k) {
+      chassis(3, 3 + k) = -0.5 * u(k);
+      chassis.block<3, 1>(4, 3 + k) = 0.5 * (w * Vec3::Unit(k) + u.cross(Vec3::Unit(k)));
+    }
+  }
+  std::array<ad::Dual, kMaxQ> qd;
+  std::array<ad::Dual, kMaxV> vd, F;
+  for (int first = 0; first < count; first += ad::kDirections) {
+    const int last = std::min(count, first + ad::kDirections);
+    for (int i = 0; i < nq_; ++i) qd[i] = ad::Dual(q(i));
+    for (int j = 0; j < n_; ++j) vd[j] = ad::Dual(v(j));
+    for (int d = first; d < last; ++d) {
+      const int j = direction[d];
+      if (j >= n_) {
+        vd[j - n_].der[d - first] = 1.0;
+        continue;
+      }
+      if (j < chassisV_)
+        for (int i = 0; i < chassisQ_; ++i) qd[i].der[d - first] = chassis(i, j);
+      else
+        qd[j - chassisV_ + chassisQ_].der[d - first] = 1.0;
+    }
+    for (int j = 0; j < n_; ++j) F[j] = ad::Dual(0.0);
+    if (!dualEquations(t, qd.data(), vd.data(), a, F.data())) return false;
+    for (int d = first; d < last; ++d) {
+      const int j = direction[d];
+      for (int i = 0; i < n_; ++i) (j < n_ ? Fq(i, j) : Fv(i, j - n_)) = F[i].der[d - first];
+    }
+  }
+  return true;
+}
+
+template <typename T>
+ClosedFormCar::DriveTorques<T> ClosedFormCar::driveTorques(const T& engineSpeed, const std::array<T, 4>& spins,
+                                                           double h) {
+  DriveTorques<T> out;
+  const bool engine = engineV() >= 0;
+  if constexpr (std::is_same_v<T, double>) {
+    engineSpeed_ = engine ? engineSpeed : 0.0;
+    if (engine) out.crank = forces_.drivelineTorques(engineSpeed_, spins, h);
+    for (int w = 0; w < 4; ++w) out.wheel[w] = forces_.wheels()[w].driveTorque;
+  } else {
+    for (int w = 0; w < 4; ++w) out.wheel[w] = T(forces_.wheels()[w].driveTorque);
+    if (engine) {
+      const VehicleForces::DrivelineTorquesT<T> D = forces_.drivelineAt(engineSpeed, spins, h);
+      out.crank = D.engine - D.clutch;
+      for (int w : forces_.drivenWheels()) out.wheel[w] = D.drive[w];
+    }
+  }
+  return out;
+}
+
+template ClosedFormCar::DriveTorques<double> ClosedFormCar::driveTorques(const double&, const std::array<double, 4>&,
+                                                                         double);
+template ClosedFormCar::DriveTorques<ad::Dual> ClosedFormCar::driveTorques(const ad::Dual&,
+                                                                           const std::array<ad::Dual, 4>&, double);
+
 const pm::SinCos& ClosedFormCar::baseHeading(double yaw) const {
   const auto bits = std::bit_cast<std::uint64_t>(yaw);
   if (!headingKnown_ || bits != headingAngleBits_) {

@@ -13,11 +13,13 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "integrator/dae.h"
 #include "integrator/step_types.h"
+#include "autodiff.h"
 #include "multibody/multibody_dae.h"
 #include "multibody/time_signal.h"
 #include "portable_math.h"
@@ -26,6 +28,13 @@
 #include "vehicle/vehicle_forces.h"
 
 namespace bdfcar::vehicle {
+
+// The closed forms' equations are written for a scalar type T: double (the
+// residual) or ad::Dual (their Jacobian, autodiff.h).
+template <typename T>
+using Vec3T = Eigen::Matrix<T, 3, 1>;
+template <typename T>
+using Mat3T = Eigen::Matrix<T, 3, 3>;
 
 class ClosedFormCar : public integ::Dae {
  public:
@@ -69,6 +78,17 @@ class ClosedFormCar : public integ::Dae {
   // (addTyreForces, addDriveTorque). A refresh then costs four tyre
   // evaluations, not four residuals.
   bool hasFastColumnParts() const override { return true; }
+  // F_q (along the retraction) and F_v exactly: the derived class's
+  // equations evaluated once on dual numbers (autodiff.h), seeded with the
+  // tangent increments of the positions and the velocities (2 n directions;
+  // finite differences above kDirections / 2 coordinates). The force laws'
+  // states and inputs are those of the last residual (as its fast columns').
+  bool stateJacobian(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a, integ::Mat& Fq,
+                     integ::Mat& Fv) override;
+  // F = equations(q, v, a), non-finite F a recoverable failure.
+  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
+                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
+                             integ::Message& msg) final;
   void fastColumnParts(double t, integ::Mat& parts) override;
   bool fastRowChange(double t, int k, double dv, double& change) override;
   // The chassis' joint (its first coordinates), then plain vector coordinates.
@@ -114,6 +134,52 @@ class ClosedFormCar : public integ::Dae {
   virtual void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const = 0;
   virtual void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const = 0;
   virtual double spinSign(int w) const = 0;
+  // Whether tangent coordinate j is an angle the equations do not read (a
+  // wheel's spin angle, the crank's: symmetric rotors), its F_q column zero.
+  bool angleOnly(int j) const {
+    for (int w = 0; w < 4; ++w)
+      if (j == spinV(w)) return true;
+    return engineV() >= 0 && j == engineV();
+  }
+  // The equations F(q, v, a) for doubles (the residual: the derived class
+  // also keeps what the step's acceptance, the fast columns and telemetry read).
+  virtual void equationsOf(double t, const double* q, const double* v, const integ::Vec& a, double* F) = 0;
+  // The same on dual numbers (q the retracted positions, v the
+  // velocities): what stateJacobian differentiates. False: not written for
+  // them (finite differences).
+  virtual bool dualEquations(double /*t*/, const ad::Dual* /*q*/, const ad::Dual* /*v*/, const integ::Vec& /*a*/,
+                             ad::Dual* /*F*/) {
+    return false;
+  }
+  // The drive torques the equations take: the crank's own torque (the
+  // engine's less the clutch's, 0 without a powertrain) and each wheel's,
+  // from a powertrain's driveline at the crank's rate and the wheels' spins
+  // relative to their carriers now, or as the driver holds them. T double
+  // (the residual: the driveline's state and the wheels' torques stored, as
+  // the multibody form's) or ad::Dual (nothing stored).
+  template <typename T>
+  struct DriveTorques {
+    T crank = T(0.0);
+    std::array<T, 4> wheel{T(0.0), T(0.0), T(0.0), T(0.0)};
+  };
+  template <typename T>
+  DriveTorques<T> driveTorques(const T& engineSpeed, const std::array<T, 4>& relativeSpins, double h);
+  // Wheel w's tyre at kinematics k (load: a planar model's), h after the
+  // last accepted step: for doubles as the residual keeps it (the wheel's
+  // kinematics and relative spin kept, the output in forces()), for dual
+  // numbers into dual, nothing kept.
+  template <typename T>
+  const tyre::TyreOutputT<T>& wheelTyre(int w, const tyre::WheelKinematicsT<T>& k, const T& relativeSpin, double h,
+                                         std::optional<T> load, tyre::TyreOutputT<T>& dual) {
+    if constexpr (std::is_same_v<T, double>) {
+      kinematics_[w] = k;
+      relativeSpin_[w] = relativeSpin;
+      return forces_.evaluateTyre(w, k, h, load);
+    } else {
+      forces_.tyreForce(w, k, h, load, dual);
+      return dual;
+    }
+  }
   // The acceptance both closed forms make: a non-finite or runaway state is
   // fatal; otherwise the force laws advance over the step with the last
   // residual's wheel kinematics (as the multibody model's acceptance does).

@@ -9,6 +9,7 @@
 #include "multibody/joint.h"
 #include "multibody/kinematics.h"
 #include "multibody/model_error.h"
+#include "autodiff.h"
 #include "portable_math.h"
 
 namespace bdfcar::vehicle {
@@ -142,80 +143,97 @@ void KinematicCar::updateSteering(double t) {
 // The table at (travel, rack): R = rest Rz(psi) Rx(phi) Ry(theta), the
 // carrier's angular velocity in its own axes E(phi, theta) a_dot, and the
 // derivatives of both over the table's coordinates (as mb's tabulated joint).
-const KinematicCar::CornerPose& KinematicCar::cornerPose(int w, double travel) const {
+template <typename T>
+void KinematicCar::poseAt(int w, const T& travel, CornerPoseT<T>& P) const {
   const Corner& C = corners_[w];
   const double rack = C.steered ? rackNow_.value : 0.0;
-  CornerPose& P = poses_[w];
-  const auto travelBits = std::bit_cast<std::uint64_t>(travel), rackBits = std::bit_cast<std::uint64_t>(rack);
-  if (P.valid && P.travelBits == travelBits && P.rackBits == rackBits) return P;
-  mb::SplineGrid::Sample& s = P.s;
+  mb::SplineGrid::SampleT<T>& s = P.s;
   C.table->eval(travel, rack, rows_[w], s);
-  const pm::SinCos p = pm::sincos(s.f[3]), f = pm::sincos(s.f[4]), th = pm::sincos(s.f[5]);
-  Mat3 M;  // Rz(psi) Rx(phi) Ry(theta)
+  const auto p = pm::sincos(s.f[3]), f = pm::sincos(s.f[4]), th = pm::sincos(s.f[5]);
+  Mat3T<T> M;  // Rz(psi) Rx(phi) Ry(theta)
   M << p.c * th.c - p.s * f.s * th.s, -p.s * f.c, p.c * th.s + p.s * f.s * th.c,  //
       p.s * th.c + p.c * f.s * th.s, p.c * f.c, p.s * th.s - p.c * f.s * th.c,    //
       -f.c * th.s, f.s, f.c * th.c;
   P.R.noalias() = C.rest * M;
-  P.t = Vec3(s.f[0], s.f[1], s.f[2]);
-  P.E << -th.s * f.c, th.c, 0, f.s, 0, 1, th.c * f.c, th.s, 0;
-  const Vec3 da0(s.grad[3][0], s.grad[4][0], s.grad[5][0]);
+  P.t = Vec3T<T>(s.f[0], s.f[1], s.f[2]);
+  P.E << -th.s * f.c, th.c, T(0.0), f.s, T(0.0), T(1.0), th.c * f.c, th.s, T(0.0);
+  const Vec3T<T> da0(s.grad[3][0], s.grad[4][0], s.grad[5][0]);
   P.w0 = P.E * da0;
-  P.ts = Vec3(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
-  P.phi = f;
-  P.theta = th;
+  P.ts = Vec3T<T>(s.grad[0][0], s.grad[1][0], s.grad[2][0]);
+  P.phiS = f.s;
+  P.phiC = f.c;
+  P.thetaS = th.s;
+  P.thetaC = th.c;
+}
+
+const KinematicCar::CornerPose& KinematicCar::cornerPose(int w, double travel) const {
+  const double rack = corners_[w].steered ? rackNow_.value : 0.0;
+  CornerPose& P = poses_[w];
+  const auto travelBits = std::bit_cast<std::uint64_t>(travel), rackBits = std::bit_cast<std::uint64_t>(rack);
+  if (P.valid && P.travelBits == travelBits && P.rackBits == rackBits) return P;
+  poseAt(w, travel, P);
   P.travelBits = travelBits;
   P.rackBits = rackBits;
   P.valid = true;
   return P;
 }
 
-void KinematicCar::cornerMotion(int w, double travel, double travelRate, CornerMotion& out, bool withRates) const {
+template <typename T>
+void KinematicCar::cornerMotion(int w, const T& travel, const T& travelRate, CornerMotionT<T>& out,
+                                bool withRates) const {
+  using V3 = Vec3T<T>;
   const Corner& C = corners_[w];
-  const CornerPose& P = cornerPose(w, travel);
-  const mb::SplineGrid::Sample& s = P.s;
-  const pm::SinCos &f = P.phi, &th = P.theta;
+  CornerPoseT<T> local;
+  const CornerPoseT<T>* pose = &local;
+  if constexpr (std::is_same_v<T, double>)
+    pose = &cornerPose(w, travel);
+  else
+    poseAt(w, travel, local);
+  const CornerPoseT<T>& P = *pose;
+  const mb::SplineGrid::SampleT<T>& s = P.s;
   out.R = P.R;
   out.t = P.t;
   out.ts = P.ts;
-  const Vec3& w0 = P.w0;
+  const V3& w0 = P.w0;
   out.ws.noalias() = out.R * w0;
   if (!withRates) return;
-  const Mat3& E = P.E;
+  const Mat3T<T>& E = P.E;
   const int nv = C.steered ? 2 : 1;
-  const double rates[2] = {travelRate, C.steered ? rackNow_.rate : 0.0};
+  const T rates[2] = {travelRate, T(C.steered ? rackNow_.rate : 0.0)};
   // dE/dphi has one non-zero column (the first), dE/dtheta two (the first two).
-  const Vec3 Ephi0(th.s * f.s, f.c, -th.c * f.s), Etheta0(-th.c * f.c, 0, -th.s * f.c), Etheta1(-th.s, 0, th.c);
-  Vec3 wb = w0 * rates[0], wdot = Vec3::Zero();
+  const T &fs = P.phiS, &fc = P.phiC, &ts = P.thetaS, &tc = P.thetaC;
+  const V3 Ephi0(ts * fs, fc, -tc * fs), Etheta0(-tc * fc, T(0.0), -ts * fc), Etheta1(-ts, T(0.0), tc);
+  V3 wb = w0 * rates[0], wdot = V3::Zero();
   out.velocity = out.ts * rates[0];
   out.accelBias.setZero();
   if (C.steered) {
-    const Vec3 da1(s.grad[3][1], s.grad[4][1], s.grad[5][1]);
-    const Vec3 w1 = E * da1;
+    const V3 da1(s.grad[3][1], s.grad[4][1], s.grad[5][1]);
+    const V3 w1 = E * da1;
     wb += w1 * rates[1];
     wdot += w1 * rackNow_.accel;
-    const Vec3 t1(s.grad[0][1], s.grad[1][1], s.grad[2][1]);
+    const V3 t1(s.grad[0][1], s.grad[1][1], s.grad[2][1]);
     out.velocity += t1 * rates[1];
     out.accelBias += t1 * rackNow_.accel;
   }
   for (int k = 0; k < nv; ++k) {
-    const Vec3 da(s.grad[3][k], s.grad[4][k], s.grad[5][k]);
+    const V3 da(s.grad[3][k], s.grad[4][k], s.grad[5][k]);
     for (int l = 0; l < nv; ++l) {
       const int h = k + l;  // (0,0) -> xx, (0,1) -> xy, (1,1) -> yy
-      const double rr = rates[k] * rates[l];
-      const Vec3 d2a(s.hess[3][h], s.hess[4][h], s.hess[5][h]);
+      const T rr = rates[k] * rates[l];
+      const V3 d2a(s.hess[3][h], s.hess[4][h], s.hess[5][h]);
       wdot += (Ephi0 * (s.grad[4][l] * da.x()) + Etheta0 * (s.grad[5][l] * da.x()) + Etheta1 * (s.grad[5][l] * da.y()) +
                E * d2a) * rr;
-      out.accelBias += Vec3(s.hess[0][h], s.hess[1][h], s.hess[2][h]) * rr;
+      out.accelBias += V3(s.hess[0][h], s.hess[1][h], s.hess[2][h]) * rr;
     }
   }
   out.omega.noalias() = out.R * wb;
   out.alphaBias.noalias() = out.R * wdot;
   // The springs and dampers of the corner through the table's lengths: the
   // generalised force F dL/d(travel) (their reaction on the rack is the rack's).
-  out.springForce = 0;
+  out.springForce = T(0.0);
   for (const auto& [k, c] : C.springs) {
-    const double L = s.f[c], Ls = s.grad[c][0];
-    const double Ldot = Ls * rates[0] + (C.steered ? s.grad[c][1] * rates[1] : 0.0);
+    const T L = s.f[c], Ls = s.grad[c][0];
+    const T Ldot = Ls * rates[0] + (C.steered ? T(s.grad[c][1] * rates[1]) : T(0.0));
     out.springForce += vehicle_.model.springs[k].force(L, Ldot) * Ls;
   }
 }
@@ -248,34 +266,45 @@ integ::EvalStatus KinematicCar::acceptStep(double t, double h, const integ::Vec&
 // force). Each corner's forces are reduced to a wrench about its carrier's
 // origin, whose partial velocities are the chassis' motion, its travel's
 // (ts, ws) and, for the wheel alone, the spin about its axis.
-integ::EvalStatus KinematicCar::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
-                                         const integ::Vec&, integ::Residual& out, bool, integ::Message& msg) {
+// Written for T double (the residual: it also keeps the chassis' pose, the
+// corners' motion, the wheels' kinematics and the tyres' outputs for the
+// step's acceptance, the fast columns and telemetry) and T ad::Dual (the
+// Jacobian: nothing kept).
+template <typename T>
+void KinematicCar::equations(double t, const T* q, const T* v, const integ::Vec& a, T* F) {
+  constexpr bool kKeep = std::is_same_v<T, double>;
+  using V3 = Vec3T<T>;
+  using M3 = Mat3T<T>;
   updateSteering(t);
   const double h = forces_.sinceAccepted(t);
   const VehicleSpec& spec = vehicle_.spec;
-  const Mat3 R0 = mb::quatToMatrix(q.data() + 3);
-  const Vec3 p = q.head<3>();
-  chassisAxes_ = R0;
-  chassisOrigin_ = p;
-  const Vec3 V = v.segment<3>(0), om = v.segment<3>(3), alpha = a.segment<3>(3);
-  const Vec3 g = R0.transpose() * gravity_;
-  const Vec3 A0 = a.segment<3>(0) + om.cross(V);  // the chassis origin's acceleration
-  auto pointAccel = [&](const Vec3& x) -> Vec3 { return A0 + alpha.cross(x) + om.cross(om.cross(x)); };
+  const M3 R0 = Eigen::Quaternion<T>(q[3], q[4], q[5], q[6]).toRotationMatrix();
+  const V3 p(q[0], q[1], q[2]);
+  if constexpr (kKeep) {
+    chassisAxes_ = R0;
+    chassisOrigin_ = p;
+  }
+  const V3 V(v[0], v[1], v[2]), om(v[3], v[4], v[5]);
+  const Vec3 alpha = a.segment<3>(3);
+  const V3 g = R0.transpose() * gravity_;
+  const V3 A0 = a.segment<3>(0) + om.cross(V);  // the chassis origin's acceleration
+  auto pointAccel = [&](const V3& x) -> V3 { return A0 + alpha.cross(x) + om.cross(V3(om.cross(x))); };
 
   // The chassis and what rides on it without a coordinate of its own: net
   // (inertial less applied) force and moment about the chassis origin.
-  Vec3 FV = chassisMass_ * (pointAccel(chassisCom_) - g);
-  Vec3 FW = chassisCom_.cross(FV) + chassisInertia_ * alpha + om.cross(chassisInertia_ * om);
+  V3 FV = chassisMass_ * (pointAccel(chassisCom_.cast<T>()) - g);
+  V3 FW = chassisCom_.cross(FV) + chassisInertia_ * alpha + om.cross(V3(chassisInertia_ * om));
   if (rackMass_ > 0) {
     const Vec3 x = rackCom0_ + rackNow_.value * rackAxis_;
-    const Vec3 F = rackMass_ * (pointAccel(x) + 2 * rackNow_.rate * om.cross(rackAxis_) + rackNow_.accel * rackAxis_ - g);
-    FV += F;
-    FW += x.cross(F) + rackInertia_ * alpha + om.cross(rackInertia_ * om);
+    const V3 Fr = rackMass_ * (pointAccel(x.cast<T>()) + 2 * rackNow_.rate * om.cross(rackAxis_) +
+                               rackNow_.accel * rackAxis_ - g);
+    FV += Fr;
+    FW += x.cross(Fr) + rackInertia_ * alpha + om.cross(V3(rackInertia_ * om));
   }
   // Air: drag at the chassis' centre of mass, lift above the axles.
-  const Vec3 vc = V + om.cross(chassisCom_);
+  const V3 vc = V + om.cross(chassisCom_);
   if (spec.dragArea > 0) {
-    const Vec3 drag = -spec.dragArea * vc.norm() * vc;
+    const V3 drag = -spec.dragArea * ad::norm0(vc) * vc;
     FV -= drag;
     FW -= chassisCom_.cross(drag);
   }
@@ -283,103 +312,110 @@ integ::EvalStatus KinematicCar::residual(double t, const integ::Vec& q, const in
     for (int axle = 0; axle < 2; ++axle) {
       const Vec3 centre = 0.5 * (vehicle_.layout.wheelCentreAtDesign[2 * axle] + vehicle_.layout.wheelCentreAtDesign[2 * axle + 1]);
       const double area = axle == 0 ? spec.liftAreaFront : spec.liftAreaRear;
-      const Vec3 lift = area * vc.x() * vc.x() * Vec3::UnitZ();
+      const T up = area * vc.x() * vc.x();
+      const V3 lift = up * V3(Vec3::UnitZ());
       FV -= lift;
       FW -= Vec3(centre.x(), chassisCom_.y(), chassisCom_.z()).cross(lift);
     }
   }
 
-  std::array<CornerMotion, 4>& cm = motions_;  // kept: fastColumnParts takes the tyres as this residual does
-  for (int w = 0; w < 4; ++w) cornerMotion(w, q(TravelQ + w), v(TravelV + w), cm[w], true);
+  std::array<CornerMotionT<T>, 4> dualMotions;
+  std::array<CornerMotionT<T>, 4>* motions = &dualMotions;
+  if constexpr (kKeep) motions = &motions_;  // kept: fastColumnParts takes the tyres as this residual does
+  std::array<CornerMotionT<T>, 4>& cm = *motions;
+  for (int w = 0; w < 4; ++w) cornerMotion(w, q[TravelQ + w], v[TravelV + w], cm[w], true);
   // Anti-roll bars between the wheel centres and the chassis, on the
   // travels: a pair of forces at the same point, working on the travel alone.
-  std::array<double, 4> Qtravel{};
+  std::array<T, 4> Qtravel{T(0.0), T(0.0), T(0.0), T(0.0)};
   for (const AntiRollBarSpec& bar : spec.antiRollBars) {
-    auto centreZ = [&](int w) { return (cm[w].t + cm[w].R * corners_[w].centre).z() - vehicle_.layout.wheelCentreAtDesign[w].z(); };
-    const double f = bar.rate * (centreZ(bar.left) - centreZ(bar.right));
+    auto centreZ = [&](int w) -> T {
+      return (cm[w].t + cm[w].R * corners_[w].centre).z() - vehicle_.layout.wheelCentreAtDesign[w].z();
+    };
+    const T f = bar.rate * (centreZ(bar.left) - centreZ(bar.right));
     for (const auto& [w, sign] : {std::pair{bar.left, 1.0}, std::pair{bar.right, -1.0}}) {
-      const Vec3 centreRate = cm[w].ts + cm[w].ws.cross(cm[w].R * corners_[w].centre);
+      const V3 centreRate = cm[w].ts + cm[w].ws.cross(V3(cm[w].R * corners_[w].centre));
       Qtravel[w] -= sign * f * centreRate.z();
     }
   }
 
   // The corners: inertial less applied wrench about the carrier's origin.
-  std::array<Vec3, 4> Fc, Mc, spinAxis, alphaC;
-  std::array<double, 4> Qspin{};
+  std::array<V3, 4> Fc, Mc, spinAxis, alphaC;
+  std::array<T, 4> Qspin{T(0.0), T(0.0), T(0.0), T(0.0)}, relativeSpin;
   for (int w = 0; w < 4; ++w) {
     const Corner& C = corners_[w];
-    const CornerMotion& m = cm[w];
-    const double sdd = a(TravelV + w), spin = v(SpinV + w), spinAcc = a(SpinV + w);
-    const Vec3 omegaC = om + m.omega;
+    const CornerMotionT<T>& m = cm[w];
+    const double sdd = a(TravelV + w), spinAcc = a(SpinV + w);
+    const T spin = v[SpinV + w];
+    const V3 omegaC = om + m.omega;
     alphaC[w] = alpha + om.cross(m.omega) + m.alphaBias + sdd * m.ws;
-    const Vec3 accO = pointAccel(m.t) + 2 * om.cross(m.velocity) + m.accelBias + sdd * m.ts;
-    const Vec3 arm = m.R * C.com;
-    const Vec3 accCom = accO + alphaC[w].cross(arm) + omegaC.cross(omegaC.cross(arm));
-    const Vec3 yAxis = m.R * C.axisY;
+    const V3 accO = pointAccel(m.t) + 2 * om.cross(m.velocity) + m.accelBias + sdd * m.ts;
+    const V3 arm = m.R * C.com;
+    const V3 accCom = accO + alphaC[w].cross(arm) + omegaC.cross(V3(omegaC.cross(arm)));
+    const V3 yAxis = m.R * C.axisY;
     spinAxis[w] = C.spinSign * yAxis;
     Fc[w] = C.mass * (accCom - g);
     // Euler's equation in the carrier's axes (its inertia constant there).
-    const Vec3 wb = m.R.transpose() * omegaC, ab = m.R.transpose() * alphaC[w];
-    const Vec3 Iw = C.inertia * wb;
-    Mc[w] = arm.cross(Fc[w]) + m.R * (C.inertia * ab + wb.cross(Iw)) +
+    const V3 wb = m.R.transpose() * omegaC, ab = m.R.transpose() * alphaC[w];
+    const V3 Iw = C.inertia * wb;
+    Mc[w] = arm.cross(Fc[w]) + m.R * V3(C.inertia * ab + wb.cross(Iw)) +
             C.spinInertia * (spinAcc * spinAxis[w] + spin * omegaC.cross(spinAxis[w]));
 
     // The tyre on its contact plane, the brake.
-    const Vec3 centre = m.t + m.R * C.centre;
-    tyre::WheelKinematics& k = kinematics_[w];
+    const V3 centre = m.t + m.R * C.centre;
+    tyre::WheelKinematicsT<T> k;
     k.centre = p + R0 * centre;
     k.spinAxis = R0 * yAxis;
-    k.centreVelocity = R0 * (V + om.cross(centre) + m.velocity + m.omega.cross(centre - m.t));
+    k.centreVelocity = R0 * V3(V + om.cross(centre) + m.velocity + m.omega.cross(V3(centre - m.t)));
     k.spinRate = yAxis.dot(omegaC) + C.spinSign * spin;
-    relativeSpin_[w] = C.spinSign * spin;
-    const tyre::TyreOutput& tyre = forces_.evaluateTyre(w, k, h, std::nullopt);
+    relativeSpin[w] = C.spinSign * spin;
+    tyre::TyreOutputT<T> dual;
+    const tyre::TyreOutputT<T>& tyre = wheelTyre(w, k, relativeSpin[w], h, std::optional<T>(), dual);
     if (tyre.inContact) {
-      const Vec3 F = R0.transpose() * tyre.force, M = R0.transpose() * tyre.moment;
-      const Vec3 at = R0.transpose() * (tyre.point - p);
-      Fc[w] -= F;
-      Mc[w] -= (at - m.t).cross(F) + M;
-      Qspin[w] += spinAxis[w].dot((at - centre).cross(F) + M);
+      const V3 Ft = R0.transpose() * tyre.force, M = R0.transpose() * tyre.moment;
+      const V3 at = R0.transpose() * V3(tyre.point - p);
+      Fc[w] -= Ft;
+      Mc[w] -= V3(at - m.t).cross(Ft) + M;
+      Qspin[w] += spinAxis[w].dot(V3(V3(at - centre).cross(Ft) + M));
     }
-    Qspin[w] += C.spinSign * forces_.brakeTorque(w, relativeSpin_[w], h);
+    Qspin[w] += C.spinSign * forces_.brakeTorque(w, relativeSpin[w], h);
   }
   // Drive torques: a powertrain's from its driveline at the crank's and the
   // wheels' speeds now (the crank's own torque: the engine's less the
   // clutch's), or as the driver holds them.
   const bool engine = engineMultibodyV_ >= 0;
-  engineSpeed_ = engine ? v(EngineV) : 0.0;
-  const double crankTorque = engine ? forces_.drivelineTorques(engineSpeed_, relativeSpin_, h) : 0.0;
+  const DriveTorques<T> drive = driveTorques(engine ? v[EngineV] : T(0.0), relativeSpin, h);
   for (int w = 0; w < 4; ++w) {
-    const double drive = forces_.wheels()[w].driveTorque;
-    if (drive == 0.0) continue;
-    Qspin[w] += corners_[w].spinSign * drive;
+    if (ad::value(drive.wheel[w]) == 0.0) continue;
+    Qspin[w] += corners_[w].spinSign * drive.wheel[w];
     if (spec.driveReaction == DriveReaction::Carrier) continue;
-    const Vec3 torque = drive * corners_[w].spinSign * spinAxis[w];  // about the wheel's y
+    const V3 torque = drive.wheel[w] * corners_[w].spinSign * spinAxis[w];  // about the wheel's y
     Mc[w] -= torque;
     if (spec.driveReaction == DriveReaction::Chassis) FW += torque;
   }
   if (engine) {
     // The crank's rotor: d/dt of its angular momentum about the chassis' x.
     const Vec3 ax = Vec3::UnitX();
-    const double spin = om.x() + v(EngineV), spinRate = alpha.x() + a(EngineV);
+    const T spin = om.x() + v[EngineV];
+    const double spinRate = alpha.x() + a(EngineV);
     FW += engineInertia_ * (spinRate * ax + spin * om.cross(ax));
-    out.F(EngineV) = engineInertia_ * spinRate - crankTorque;
+    F[EngineV] = engineInertia_ * spinRate - drive.crank;
   }
   // Projection on the partial velocities.
   for (int w = 0; w < 4; ++w) {
-    const CornerMotion& m = cm[w];
+    const CornerMotionT<T>& m = cm[w];
     FV += Fc[w];
     FW += Mc[w] + m.t.cross(Fc[w]);
-    out.F(TravelV + w) = m.ts.dot(Fc[w]) + m.ws.dot(Mc[w]) - m.springForce - Qtravel[w];
-    out.F(SpinV + w) = corners_[w].spinInertia * (a(SpinV + w) + spinAxis[w].dot(alphaC[w])) - Qspin[w];
+    F[TravelV + w] = m.ts.dot(Fc[w]) + m.ws.dot(Mc[w]) - m.springForce - Qtravel[w];
+    F[SpinV + w] = corners_[w].spinInertia * (a(SpinV + w) + spinAxis[w].dot(alphaC[w])) - Qspin[w];
   }
-  out.F.segment<3>(0) = FV;
-  out.F.segment<3>(3) = FW;
-  if (!out.F.allFinite()) {
-    msg.set("non-finite equations of motion at t = %.6g s", t);
-    return integ::EvalStatus::Recoverable;
+  for (int i = 0; i < 3; ++i) {
+    F[i] = FV(i);
+    F[3 + i] = FW(i);
   }
-  return integ::EvalStatus::Ok;
 }
+
+template void KinematicCar::equations(double, const double*, const double*, const integ::Vec&, double*);
+template void KinematicCar::equations(double, const ad::Dual*, const ad::Dual*, const integ::Vec&, ad::Dual*);
 
 // sum over bodies of m Jv^T Jv + Jw^T I Jw with the residual's partial
 // velocities; the rotors' (spins, crank) about their axes.

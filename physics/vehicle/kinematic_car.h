@@ -57,12 +57,16 @@ class KinematicCar final : public ClosedFormCar {
   void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
   integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                integ::Message& msg) override;
-  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
-                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
-                             integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
 
  protected:
+  void equationsOf(double t, const double* q, const double* v, const integ::Vec& a, double* F) override {
+    equations(t, q, v, a, F);
+  }
+  bool dualEquations(double t, const ad::Dual* q, const ad::Dual* v, const integ::Vec& a, ad::Dual* F) override {
+    equations(t, q, v, a, F);
+    return true;
+  }
   void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const override;
   void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const override;
   double spinSign(int w) const override { return corners_[w].spinSign; }
@@ -83,31 +87,44 @@ class KinematicCar final : public ClosedFormCar {
     int travelQ = 0, travelV = 0, spinQ = 0, spinV = 0;  // the multibody model's
   };
   // A corner's pose and motion relative to the chassis at one evaluation
-  // (chassis axes): its table at the travel and rack, the rates' share.
-  struct CornerMotion {
-    Mat3 R;                    // carrier axes in chassis axes
-    Vec3 t;                    // carrier origin
-    Vec3 ts, ws;               // origin velocity and angular velocity per unit travel rate
-    Vec3 velocity, omega;      // relative origin velocity and angular velocity at the rates
-    Vec3 accelBias, alphaBias; // relative accelerations but the travel's acceleration's share
-    double springForce = 0;    // the springs' and dampers' generalised force on the travel (+ pushing it up)
+  // (chassis axes): its table at the travel and rack, the rates' share. T
+  // double, or ad::Dual (the Jacobian: the travel and its rate dual).
+  template <typename T>
+  struct CornerMotionT {
+    Mat3T<T> R;                    // carrier axes in chassis axes
+    Vec3T<T> t;                    // carrier origin
+    Vec3T<T> ts, ws;               // origin velocity and angular velocity per unit travel rate
+    Vec3T<T> velocity, omega;      // relative origin velocity and angular velocity at the rates
+    Vec3T<T> accelBias, alphaBias; // relative accelerations but the travel's acceleration's share
+    T springForce = T(0.0);        // the springs' and dampers' generalised force on the travel (+ pushing it up)
   };
+  using CornerMotion = CornerMotionT<double>;
   // withRates false: the pose and the partials alone (positions only).
-  void cornerMotion(int w, double travel, double travelRate, CornerMotion& m, bool withRates) const;
-  // A corner's table at a travel and rack travel, the angles' sines and
-  // cosines and the pose from them: a pure function of the two, kept for the
-  // last pair (where the ground needs beginStep, the step's first residual
+  template <typename T>
+  void cornerMotion(int w, const T& travel, const T& travelRate, CornerMotionT<T>& m, bool withRates) const;
+  // A corner's table at a travel and the step's rack travel, the angles'
+  // sines and cosines and the pose from them.
+  template <typename T>
+  struct CornerPoseT {
+    mb::SplineGrid::SampleT<T> s;
+    T phiS, phiC, thetaS, thetaC;  // of the roll and pitch angles (the rates need them)
+    Mat3T<T> R, E;                 // E: the angles' rates to the angular velocity, carrier axes
+    Vec3T<T> t, ts, w0;
+  };
+  template <typename T>
+  void poseAt(int w, const T& travel, CornerPoseT<T>& P) const;
+  // The double one kept for the last (travel, rack) pair, a pure function
+  // of the two (where the ground needs beginStep, the step's first residual
   // is at the travel it took; a finite-difference Jacobian moves a corner's
   // travel in 2 of its 2 nv + 1 residuals).
-  struct CornerPose {
+  struct CornerPose : CornerPoseT<double> {
     std::uint64_t travelBits = 0, rackBits = 0;
     bool valid = false;
-    mb::SplineGrid::Sample s;
-    pm::SinCos phi, theta;  // of the roll and pitch angles (the rates need them)
-    Mat3 R, E;              // E: the angles' rates to the angular velocity, carrier axes
-    Vec3 t, ts, w0;
   };
   const CornerPose& cornerPose(int w, double travel) const;
+  // F(q, v, a) for T double (the residual) or ad::Dual (the Jacobian).
+  template <typename T>
+  void equations(double t, const T* q, const T* v, const integ::Vec& a, T* F);
   void updateSteering(double t);
 
   Vec3 gravity_;

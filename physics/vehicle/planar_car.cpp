@@ -7,6 +7,7 @@
 #include "multibody/joint.h"
 #include "multibody/kinematics.h"
 #include "multibody/model_error.h"
+#include "autodiff.h"
 #include "portable_math.h"
 #include "terrain/terrain_data.h"
 
@@ -19,16 +20,24 @@ const Vec3 kX = Vec3::UnitX(), kY = Vec3::UnitY(), kZ = Vec3::UnitZ();
 [[noreturn]] void refuse(const std::string& what) { throw mb::ModelError("closed-form planar car: " + what); }
 
 // The base frame's yaw: base -> world (toWorld) and back (toLocal).
-terrain::HeadingTurn headingOf(double angle) {
-  const pm::SinCos r = pm::sincos(angle);
+template <typename T>
+struct Heading {
+  T c, s;
+  Vec3T<T> toWorld(const Vec3T<T>& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()}; }
+  Vec3T<T> toLocal(const Vec3T<T>& v) const { return {c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z()}; }
+};
+template <typename T>
+Heading<T> headingOf(const T& angle) {
+  const auto r = pm::sincos(angle);
   return {r.c, r.s};
 }
 
 // Rx(roll) Ry(pitch): the universal joint's rotation.
-Mat3 rollPitch(double roll, double pitch) {
-  const pm::SinCos f = pm::sincos(roll), t = pm::sincos(pitch);
-  Mat3 R;
-  R << t.c, 0, t.s,              //
+template <typename T>
+Mat3T<T> rollPitch(const T& roll, const T& pitch) {
+  const auto f = pm::sincos(roll), t = pm::sincos(pitch);
+  Mat3T<T> R;
+  R << t.c, T(0.0), t.s,         //
       f.s * t.s, f.c, -f.s * t.c,  //
       -f.c * t.s, f.s, f.c * t.c;
   return R;
@@ -239,7 +248,7 @@ void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();  // the rack's segment may have changed at a tick
   if (!forces_.needsBeginStep()) return;
   updateSteering(t);
-  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
+  const Heading<double> yaw = headingOf(q(Yaw));
   const Vec3 origin(q(X), q(Y), groundZ_);
   std::array<Vec3, 4> centres, axes;
   for (int w = 0; w < 4; ++w) {
@@ -261,179 +270,191 @@ integ::EvalStatus PlanarCar::acceptStep(double t, double h, const integ::Vec& q,
 // F = sum over bodies of (partial velocity) . (inertial force - applied force)
 // for the sprung body (the only one whose motion relative to the base is a
 // state) and the lumped base, plus each wheel's spin about its axis.
-integ::EvalStatus PlanarCar::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
-                                      const integ::Vec&, integ::Residual& out, bool, integ::Message& msg) {
+// Written for T double (the residual: it also keeps the wheels' kinematics,
+// the tyres' outputs and the corner springs for the step's acceptance, the
+// fast columns and telemetry) and T ad::Dual (the Jacobian: nothing kept).
+template <typename T>
+void PlanarCar::equations(double t, const T* q, const T* v, const integ::Vec& a, T* F) {
+  constexpr bool kKeep = std::is_same_v<T, double>;
+  using V3 = Vec3T<T>;
+  using M3 = Mat3T<T>;
   updateSteering(t);
   const double h = forces_.sinceAccepted(t);
   const PlanarLoads& PL = *vehicle_.planar;
   const VehicleSpec& spec = vehicle_.spec;
-  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
-  const Mat3 RJ = rollPitch(q(Roll), q(Pitch));
+  const Heading<T> yaw = headingOf(q[Yaw]);
+  const M3 RJ = rollPitch(q[Roll], q[Pitch]);
   const bool lift = spec.liftAreaFront != 0 || spec.liftAreaRear != 0;
-  Mat3 Rs;  // the sprung body's axes in the base frame (what the bars and the lift need)
+  M3 Rs;  // the sprung body's axes in the base frame (what the bars and the lift need)
   if (lift || !spec.antiRollBars.empty()) Rs.noalias() = RJ * sprungRest_;
-  const Vec3 e = RJ.col(1);          // the pitch axis
-  const double u = v(0), vs = v(1), r = v(2), rollRate = v(3), pitchRate = v(4);
-  const Vec3 rho = RJ * comArm0_, P = axisPoint_ + rho;
-  const Vec3 omegaRel = rollRate * kX + pitchRate * e, omega = r * kZ + omegaRel;
-  const Vec3 g = yaw.toLocal(gravity_);
-  auto sprungPoint = [&](const Vec3& body) -> Vec3 { return axisPoint_ + Rs * (body - jointInBody_); };
+  const V3 e = RJ.col(1);  // the pitch axis
+  const T u = v[0], vs = v[1], r = v[2], rollRate = v[3], pitchRate = v[4];
+  const V3 rho = RJ * comArm0_, P = axisPoint_ + rho;
+  const V3 omegaRel = rollRate * kX + pitchRate * e, omega = r * kZ + omegaRel;
+  const V3 g = yaw.toLocal(gravity_.cast<T>());
+  auto sprungPoint = [&](const Vec3& body) -> V3 { return axisPoint_ + Rs * (body - jointInBody_); };
 
   // Applied forces: on the sprung body as a wrench about its centre of mass,
   // on the lumped base (wheels' centres included) as a force and a yaw
   // moment about the base origin, on each spin coordinate.
-  Vec3 fs = sprungMass_ * g, ts = Vec3::Zero();
-  Vec3 fb = baseMass_ * g;
-  double tb = 0;
-  std::array<double, 4> Qspin{};
-  auto onSprung = [&](const Vec3& x, const Vec3& f) {
+  V3 fs = sprungMass_ * g, ts = V3::Zero();
+  V3 fb = baseMass_ * g;
+  T tb = T(0.0);
+  std::array<T, 4> Qspin{T(0.0), T(0.0), T(0.0), T(0.0)};
+  auto onSprung = [&](const V3& x, const V3& f) {
     fs += f;
     ts += (x - P).cross(f);
   };
-  auto onBase = [&](const Vec3& x, const Vec3& f) {
+  auto onBase = [&](const V3& x, const V3& f) {
     fb += f;
     tb += x.x() * f.y() - x.y() * f.x();
   };
 
   // Corner springs between the rolled and pitched body and the base (their
   // reaction on the base is vertical: no work in the plane).
-  std::array<double, 4> load, travel;
+  std::array<T, 4> load, travel;
   for (int w = 0; w < 4; ++w) {
-    const Vec3 ps = axisPoint_ + RJ * cornerArm_[w];
-    const double z = ps.z() - PL.basePoint[w].z();
-    const double zd = omegaRel.cross(ps - axisPoint_).z();
+    const V3 ps = axisPoint_ + RJ * cornerArm_[w];
+    const T z = ps.z() - PL.basePoint[w].z();
+    const T zd = omegaRel.cross(V3(ps - axisPoint_)).z();
     travel[w] = -PL.suspensionShare[w] * z;
-    WheelOutput& o = forces_.output(w);
-    o.cornerSpring = -PL.rate[w] * z;
-    o.cornerDamper = -PL.damping[w] * zd;
-    const double f = o.cornerSpring + o.cornerDamper;
-    onSprung(ps, f * kZ);
+    const T spring = -PL.rate[w] * z, damper = -PL.damping[w] * zd;
+    if constexpr (kKeep) {
+      WheelOutput& o = forces_.output(w);
+      o.cornerSpring = spring;
+      o.cornerDamper = damper;
+    }
+    const T f = spring + damper;
+    onSprung(ps, V3(f * kZ));
     load[w] = PL.staticLoad[w] + f;
   }
-  const std::array<double, 4> shift = forces_.planarLoadShift(Vec3(yaw.c, yaw.s, 0), Vec3(-yaw.s, yaw.c, 0));
+  const std::array<T, 4> shift = forces_.planarLoadShift(V3(yaw.c, yaw.s, T(0.0)), V3(-yaw.s, yaw.c, T(0.0)));
   for (int w = 0; w < 4; ++w) load[w] += shift[w];
   if (!spec.antiRollBars.empty()) {
-    const Vec3 up = Rs.col(2);
-    auto centreTravel = [&](int w) {
+    const V3 up = Rs.col(2);
+    auto centreTravel = [&](int w) -> T {
       return (Rs.transpose() * (wheels_[w].centre - axisPoint_) + jointInBody_).z() - vehicle_.layout.wheelCentreAtDesign[w].z();
     };
     for (const AntiRollBarSpec& bar : spec.antiRollBars) {
-      const double f = PL.barRate[bar.left / 2] * (centreTravel(bar.left) - centreTravel(bar.right));
+      const T f = PL.barRate[bar.left / 2] * (centreTravel(bar.left) - centreTravel(bar.right));
       for (const auto& [w, sign] : {std::pair{bar.left, 1.0}, std::pair{bar.right, -1.0}}) {
-        onBase(wheels_[w].centre, -sign * f * up);
-        onSprung(wheels_[w].centre, sign * f * up);
+        onBase(wheels_[w].centre.template cast<T>(), V3(-sign * f * up));
+        onSprung(wheels_[w].centre.template cast<T>(), V3(sign * f * up));
         load[w] += sign * f;
       }
     }
   }
 
   // The wheels: tyres on their contact planes, brakes, drive torques.
-  const Vec3 origin(q(X), q(Y), groundZ_);
-  std::array<Vec3, 4> tyreAxis;
+  const V3 origin(q[X], q[Y], T(groundZ_));
+  std::array<V3, 4> tyreAxis;
+  std::array<T, 4> relativeSpin;
+  std::array<tyre::WheelKinematicsT<T>, 4> ks;
   for (int w = 0; w < 4; ++w) {
     const Wheel& W = wheels_[w];
-    Vec3 axis = RJ * W.axisY;  // the tyre sees the body's roll and pitch and the carrier's turn over its travel
-    axis += (travel[w] * (RJ * turnPerTravel_[w])).cross(axis);
+    V3 axis = RJ * W.axisY;  // the tyre sees the body's roll and pitch and the carrier's turn over its travel
+    axis += V3(travel[w] * (RJ * turnPerTravel_[w])).cross(axis);
     axis.normalize();
-    tyre::WheelKinematics& k = kinematics_[w];
-    k.centre = origin + yaw.toWorld(W.centre);
+    tyre::WheelKinematicsT<T>& k = ks[w];
+    k.centre = origin + yaw.toWorld(W.centre.cast<T>());
     k.spinAxis = yaw.toWorld(axis);
-    k.centreVelocity = yaw.toWorld(Vec3(u - r * W.centre.y(), vs + r * W.centre.x(), 0) + W.centreRate);
-    const double jointRate = v(Spin + w);
+    k.centreVelocity = yaw.toWorld(V3(V3(u - r * W.centre.y(), vs + r * W.centre.x(), T(0.0)) + W.centreRate));
+    const T jointRate = v[Spin + w];
     k.spinRate = r * W.axisY.z() + W.steeringSpin + W.spinSign * jointRate;  // about the wheel's y
-    relativeSpin_[w] = W.spinSign * jointRate;
-    forces_.output(w).modelLoad = load[w];
-    const tyre::TyreOutput& tyre = forces_.evaluateTyre(w, k, h, load[w]);
+    relativeSpin[w] = W.spinSign * jointRate;
+    if constexpr (kKeep) forces_.output(w).modelLoad = load[w];
+    tyre::TyreOutputT<T> dual;
+    const tyre::TyreOutputT<T>& tyre = wheelTyre(w, k, relativeSpin[w], h, std::optional<T>(load[w]), dual);
     const Vec3 spinAxis = W.spinSign * W.axisY;  // the spin joint's
     if (tyre.inContact) {
-      const Vec3 F = yaw.toLocal(tyre.force), M = yaw.toLocal(tyre.moment), at = yaw.toLocal(tyre.point - origin);
-      onBase(at, F);
+      const V3 Ft = yaw.toLocal(tyre.force), M = yaw.toLocal(tyre.moment);
+      const V3 at = yaw.toLocal(V3(tyre.point - origin));
+      onBase(at, Ft);
       tb += M.z();
-      Qspin[w] += spinAxis.dot((at - W.centre).cross(F) + M);
+      Qspin[w] += spinAxis.dot(V3(V3(at - W.centre).cross(Ft) + M));
     }
-    Qspin[w] += W.spinSign * forces_.brakeTorque(w, relativeSpin_[w], h);
+    Qspin[w] += W.spinSign * forces_.brakeTorque(w, relativeSpin[w], h);
     tyreAxis[w] = axis;
   }
-  turn_ = yaw;
-  origin_ = origin;
-  pitchAxis_ = e;
-  tyreAxis_ = tyreAxis;
+  if constexpr (kKeep) {
+    turn_ = {yaw.c, yaw.s};
+    origin_ = origin;
+    pitchAxis_ = e;
+    tyreAxis_ = tyreAxis;
+  }
   // Drive torques: a powertrain's from its driveline at the crank's and the
   // wheels' speeds now (the crank's own torque: the engine's less the
   // clutch's), or as the driver holds them.
-  engineSpeed_ = engineV_ >= 0 ? v(Engine) : 0.0;
-  const double crankTorque = engineV_ >= 0 ? forces_.drivelineTorques(engineSpeed_, relativeSpin_, h) : 0.0;
+  const DriveTorques<T> drive = driveTorques(engineV_ >= 0 ? v[Engine] : T(0.0), relativeSpin, h);
   for (int w = 0; w < 4; ++w) {
-    const double drive = forces_.wheels()[w].driveTorque;
-    if (drive == 0.0) continue;
+    if (ad::value(drive.wheel[w]) == 0.0) continue;
     const Wheel& W = wheels_[w];
     if (spec.driveReaction == DriveReaction::Carrier) {
-      Qspin[w] += W.spinSign * drive;
+      Qspin[w] += W.spinSign * drive.wheel[w];
       continue;
     }
-    const Vec3 torque = drive * tyreAxis[w];
+    const V3 torque = drive.wheel[w] * tyreAxis[w];
     tb += torque.z();
     Qspin[w] += W.spinSign * W.axisY.dot(torque);
     if (spec.driveReaction == DriveReaction::Chassis) ts -= torque;
   }
 
   // Air: drag at the sprung body's centre of mass, lift above the axles.
-  const Vec3 vc = u * kX + vs * kY + r * kZ.cross(P) + omegaRel.cross(rho);
-  if (spec.dragArea > 0) onSprung(P, -spec.dragArea * vc.norm() * vc);
+  const V3 vc = u * kX + vs * kY + r * kZ.cross(P) + omegaRel.cross(rho);
+  if (spec.dragArea > 0) onSprung(P, V3(-spec.dragArea * ad::norm0(vc) * vc));
   if (lift) {
-    const double air = Rs.col(0).dot(vc);
+    const T air = Rs.col(0).dot(vc);
     const Vec3& com = vehicle_.model.bodies[vehicle_.layout.chassis].com;
     for (int axle = 0; axle < 2; ++axle) {
       const Vec3 centre = 0.5 * (vehicle_.layout.wheelCentreAtDesign[2 * axle] + vehicle_.layout.wheelCentreAtDesign[2 * axle + 1]);
       const double area = axle == 0 ? spec.liftAreaFront : spec.liftAreaRear;
-      onSprung(sprungPoint(Vec3(centre.x(), com.y(), com.z())), area * air * air * Rs.col(2));
+      onSprung(sprungPoint(Vec3(centre.x(), com.y(), com.z())), V3(area * air * air * Rs.col(2)));
     }
   }
 
   // Inertial forces. The sprung body: partial velocities of its centre of
   // mass and partial angular velocities for (forward, sideways, yaw rate,
   // roll rate, pitch rate); accelerations = partials . a + velocity terms.
-  const std::array<Vec3, 5> Jv{kX, kY, kZ.cross(P), kX.cross(rho), e.cross(rho)};
-  const std::array<Vec3, 5> Jw{Vec3::Zero(), Vec3::Zero(), kZ, kX, e};
-  const Vec3 xe = kX.cross(e);
-  Vec3 ac = omega.cross(omegaRel.cross(rho)) + (rollRate * pitchRate) * xe.cross(rho) + r * kZ.cross(vc);
-  Vec3 alpha = (rollRate * pitchRate) * xe + r * kZ.cross(omegaRel);
+  const std::array<V3, 5> Jv{V3(kX), V3(kY), V3(kZ.cross(P)), V3(kX.cross(rho)), V3(e.cross(rho))};
+  const std::array<V3, 5> Jw{V3::Zero(), V3::Zero(), V3(kZ), V3(kX), e};
+  const V3 xe = kX.cross(e);
+  V3 ac = omega.cross(omegaRel.cross(rho)) + (rollRate * pitchRate) * xe.cross(rho) + r * kZ.cross(vc);
+  V3 alpha = (rollRate * pitchRate) * xe + r * kZ.cross(omegaRel);
   for (int j = 0; j < 5; ++j) {
     ac += a(j) * Jv[j];
     alpha += a(j) * Jw[j];
   }
-  const Mat3 I = RJ * inertia0_ * RJ.transpose();
-  const Vec3 fin = sprungMass_ * ac - fs;
-  Vec3 tin = I * alpha + omega.cross(I * omega) - ts;
+  const M3 I = RJ * inertia0_ * RJ.transpose();
+  const V3 fin = sprungMass_ * ac - fs;
+  V3 tin = I * alpha + omega.cross(V3(I * omega)) - ts;
   if (engineV_ >= 0) {
     // The crank's rotor: d/dt of its angular momentum I (x . w_e) x about
     // the body's x axis, w_e = w + crank rate x.
-    const Vec3 ax = RJ * crankAxis0_;
-    const double spin = ax.dot(omega) + v(Engine), spinRate = ax.dot(alpha) + a(Engine);
+    const V3 ax = RJ * crankAxis0_;
+    const T spin = ax.dot(omega) + v[Engine], spinRate = ax.dot(alpha) + a(Engine);
     tin += engineInertia_ * (spinRate * ax + spin * omega.cross(ax));
-    out.F(Engine) = engineInertia_ * spinRate - crankTorque;
+    F[Engine] = engineInertia_ * spinRate - drive.crank;
   }
-  for (int j = 0; j < 5; ++j) out.F(j) = Jv[j].dot(fin) + Jw[j].dot(tin);
+  for (int j = 0; j < 5; ++j) F[j] = Jv[j].dot(fin) + Jw[j].dot(tin);
   // The lumped base: its centre of mass accelerates with the base frame.
-  const double Ax = a(0) - r * vs, Ay = a(1) + r * u, Sx = baseMoment_.x(), Sy = baseMoment_.y();
-  out.F(0) += baseMass_ * Ax - a(2) * Sy - r * r * Sx - fb.x() + steeringForce_.x() - r * steeringCoriolis_.y();
-  out.F(1) += baseMass_ * Ay + a(2) * Sx - r * r * Sy - fb.y() + steeringForce_.y() + r * steeringCoriolis_.x();
-  out.F(2) += Sx * Ay - Sy * Ax + baseYawInertia_ * a(2) - tb + steeringYaw_ + r * steeringYawCoriolis_;
+  const T Ax = a(0) - r * vs, Ay = a(1) + r * u;
+  const double Sx = baseMoment_.x(), Sy = baseMoment_.y();
+  F[0] += baseMass_ * Ax - a(2) * Sy - r * r * Sx - fb.x() + steeringForce_.x() - r * steeringCoriolis_.y();
+  F[1] += baseMass_ * Ay + a(2) * Sx - r * r * Sy - fb.y() + steeringForce_.y() + r * steeringCoriolis_.x();
+  F[2] += Sx * Ay - Sy * Ax + baseYawInertia_ * a(2) - tb + steeringYaw_ + r * steeringYawCoriolis_;
   // The spins: the absolute spin about the wheel's axis (Euler's equation of
   // a wheel symmetric about it), coupled to the yaw and the steering.
   for (int w = 0; w < 4; ++w) {
     const Wheel& W = wheels_[w];
     const double coupling = W.spinInertia * W.axisY.z() * W.spinSign;
-    out.F(Spin + w) = W.spinInertia * a(Spin + w) + coupling * a(2) - Qspin[w] +
-                      W.spinSign * W.spinInertia * (W.steeringSpinRate + r * W.tiltRate);
-    out.F(2) += coupling * a(Spin + w) + W.spinInertia * kinematics_[w].spinRate * W.tiltRate;
+    F[Spin + w] = W.spinInertia * a(Spin + w) + coupling * a(2) - Qspin[w] +
+                  W.spinSign * W.spinInertia * (W.steeringSpinRate + r * W.tiltRate);
+    F[2] += coupling * a(Spin + w) + W.spinInertia * ks[w].spinRate * W.tiltRate;
   }
-  if (!out.F.allFinite()) {
-    msg.set("non-finite equations of motion at t = %.6g s", t);
-    return integ::EvalStatus::Recoverable;
-  }
-  return integ::EvalStatus::Ok;
 }
+
+template void PlanarCar::equations(double, const double*, const double*, const integ::Vec&, double*);
+template void PlanarCar::equations(double, const ad::Dual*, const ad::Dual*, const integ::Vec&, ad::Dual*);
 
 bool PlanarCar::massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) {
   updateSteering(t);
@@ -491,7 +512,7 @@ void PlanarCar::toMultibody(double t, const integ::Vec& q, const integ::Vec& v, 
 }
 
 Vec3 PlanarCar::chassisOrigin(const integ::Vec& q) const {
-  const terrain::HeadingTurn yaw = headingOf(q(Yaw));
+  const Heading<double> yaw = headingOf(q(Yaw));
   const Vec3 p = axisPoint_ - rollPitch(q(Roll), q(Pitch)) * sprungRest_ * jointInBody_;
   return Vec3(q(X), q(Y), groundZ_) + yaw.toWorld(p);
 }

@@ -63,12 +63,16 @@ class PlanarCar final : public ClosedFormCar {
   void beginStep(double t, const integ::Vec& q, const integ::Vec& v) override;
   integ::EvalStatus acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                integ::Message& msg) override;
-  integ::EvalStatus residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
-                             const integ::Vec& lambda, integ::Residual& out, bool withConstraints,
-                             integ::Message& msg) override;
   bool massMatrix(double t, const integ::Vec& q, integ::Mat& Fa) override;
 
  protected:
+  void equationsOf(double t, const double* q, const double* v, const integ::Vec& a, double* F) override {
+    equations(t, q, v, a, F);
+  }
+  bool dualEquations(double t, const ad::Dual* q, const ad::Dual* v, const integ::Vec& a, ad::Dual* F) override {
+    equations(t, q, v, a, F);
+    return true;
+  }
   void addTyreForces(int w, const tyre::TyreOutput& tyre, double scale, Eigen::Ref<integ::Vec> col) const override;
   void addDriveTorque(int w, double scale, Eigen::Ref<integ::Vec> col) const override;
   double spinSign(int w) const override { return wheels_[w].spinSign; }
@@ -88,6 +92,9 @@ class PlanarCar final : public ClosedFormCar {
   };
   // The geometry of the step's time (the steered wheels at the rack signal).
   void updateSteering(double t);
+  // F(q, v, a) for T double (the residual) or ad::Dual (the Jacobian).
+  template <typename T>
+  void equations(double t, const T* q, const T* v, const integ::Vec& a, T* F);
 
   // Everything but the sprung body, riding on the base: its mass, first
   // moment in the base plane and yaw inertia about the base origin (at the

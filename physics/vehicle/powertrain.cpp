@@ -3,44 +3,64 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "autodiff.h"
 #include "portable_math.h"
 
 namespace bdfcar::vehicle {
 
-double fullLoadTorque(const EngineSpec& e, double w) {
+// The speed-dependent laws for a scalar type T (double, or ad::Dual for a
+// closed form's Jacobian: autodiff.h), the bits of the double ones as before.
+template <typename T>
+T fullLoadTorque(const EngineSpec& e, const T& wT) {
+  const double w = ad::value(wT);
   const std::vector<double>& x = e.speed;
-  if (x.empty()) return 0.0;
-  if (w <= x.front()) return e.torque.front();
-  if (w >= x.back()) return e.torque.back();
+  if (x.empty()) return T(0.0);
+  if (w <= x.front()) return T(e.torque.front());
+  if (w >= x.back()) return T(e.torque.back());
   const auto hi = std::upper_bound(x.begin(), x.end(), w);
   const std::size_t i = static_cast<std::size_t>(hi - x.begin());
-  const double s = (w - x[i - 1]) / (x[i] - x[i - 1]);
+  const T s = (wT - x[i - 1]) / (x[i] - x[i - 1]);
   return e.torque[i - 1] + s * (e.torque[i] - e.torque[i - 1]);
 }
 
-double effectiveThrottle(const EngineSpec& e, double w, double throttle) {
-  const double governor = std::clamp((e.idleSpeed - w) / e.governorBand, 0.0, 1.0);
-  const double open = std::max(std::clamp(throttle, 0.0, 1.0), governor);
+template <typename T>
+T effectiveThrottle(const EngineSpec& e, const T& w, double throttle) {
+  const T governor = ad::clamp(T((e.idleSpeed - w) / e.governorBand), 0.0, 1.0);
+  const T open = ad::max(std::clamp(throttle, 0.0, 1.0), governor);
   // The fuel cut closes the throttle over the first 1 % above the limit
   // (a ramp rather than a switch: Newton sees a continuous residual).
-  const double cut = std::clamp((1.01 * e.revLimit - w) / (0.01 * e.revLimit), 0.0, 1.0);
+  const T cut = ad::clamp(T((1.01 * e.revLimit - w) / (0.01 * e.revLimit)), 0.0, 1.0);
   return open * cut;
 }
 
-double engineFriction(const EngineSpec& e, double w) {
+template <typename T>
+T engineFriction(const EngineSpec& e, const T& w) {
+  using std::abs;
   // tanh over 1 rad/s: the friction of a turning engine, zero at rest.
-  return (e.friction + e.frictionSlope * std::abs(w)) * pm::tanh(w);
+  return (e.friction + e.frictionSlope * abs(w)) * pm::tanh(w);
 }
 
-double engineTorque(const EngineSpec& e, double w, double throttle) {
+template <typename T>
+T engineTorque(const EngineSpec& e, const T& w, double throttle) {
   return effectiveThrottle(e, w, throttle) * fullLoadTorque(e, w) - engineFriction(e, w);
 }
 
-double clutchTorque(const ClutchSpec& c, double capacity, double deflection, double slip, double h) {
-  if (capacity <= 0) return 0.0;
-  const double t = c.stiffness * (deflection + h * slip) + c.damping * slip;
-  return capacity * pm::tanh(t / capacity);
+template <typename T>
+T clutchTorque(const ClutchSpec& c, double capacity, double deflection, const T& slip, double h) {
+  if (capacity <= 0) return T(0.0);
+  const T t = c.stiffness * (deflection + h * slip) + c.damping * slip;
+  return capacity * pm::tanh(T(t / capacity));
 }
+
+#define BDFCAR_POWERTRAIN_LAWS(T)                                                    \
+  template T fullLoadTorque(const EngineSpec&, const T&);                           \
+  template T effectiveThrottle(const EngineSpec&, const T&, double);                \
+  template T engineFriction(const EngineSpec&, const T&);                           \
+  template T engineTorque(const EngineSpec&, const T&, double);                     \
+  template T clutchTorque(const ClutchSpec&, double, double, const T&, double);
+BDFCAR_POWERTRAIN_LAWS(double)
+BDFCAR_POWERTRAIN_LAWS(ad::Dual)
+#undef BDFCAR_POWERTRAIN_LAWS
 
 double advanceClutchDeflection(const ClutchSpec& c, double capacity, double deflection, double slip, double h) {
   if (capacity <= 0) return 0.0;

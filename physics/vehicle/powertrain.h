@@ -38,21 +38,28 @@ struct DrivelineState {
   bool operator==(const DrivelineState&) const = default;
 };
 
+// The laws of the engine and clutch speeds below are written for T double
+// or ad::Dual (a closed form's Jacobian, autodiff.h; powertrain.cpp).
 // Full-load torque at engine speed w (the table, held at its end values).
-double fullLoadTorque(const EngineSpec& e, double w);
+template <typename T>
+T fullLoadTorque(const EngineSpec& e, const T& w);
 // The throttle after the idle governor (fully open governorBand below idle,
 // closed at idle) and the fuel cut (closed from 1 % above the rev limit).
-double effectiveThrottle(const EngineSpec& e, double w, double throttle);
+template <typename T>
+T effectiveThrottle(const EngineSpec& e, const T& w, double throttle);
 // Friction and pumping torque at speed w (opposes the rotation; smooth through 0).
-double engineFriction(const EngineSpec& e, double w);
+template <typename T>
+T engineFriction(const EngineSpec& e, const T& w);
 // Net engine torque on the crank: effective throttle x full load - friction.
-double engineTorque(const EngineSpec& e, double w, double throttle);
+template <typename T>
+T engineTorque(const EngineSpec& e, const T& w, double throttle);
 
 // The clutch's torque from the engine into the gearbox: a spring-damper on
 // the slip since the clutch last slipped (deflection, advanced per accepted
 // step, plus h x slip inside the step), saturated smoothly at the capacity,
 // as the brakes (vehicle_forces.h).
-double clutchTorque(const ClutchSpec& c, double capacity, double deflection, double slip, double h);
+template <typename T>
+T clutchTorque(const ClutchSpec& c, double capacity, double deflection, const T& slip, double h);
 // The deflection after an accepted step of length h (clamped to what the capacity holds).
 double advanceClutchDeflection(const ClutchSpec& c, double capacity, double deflection, double slip, double h);
 

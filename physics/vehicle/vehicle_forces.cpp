@@ -1,5 +1,7 @@
 #include "vehicle/vehicle_forces.h"
 
+#include "autodiff.h"
+
 #include <algorithm>
 #include <cmath>
 #include "multibody/dynamics.h"
@@ -304,13 +306,30 @@ void VehicleForces::beginContacts(const std::array<Eigen::Vector3d, 4>& centres,
   state_->planesReady = true;
 }
 
-double VehicleForces::brakeTorque(int w, double spin, double h) const {
+template <typename T>
+T VehicleForces::brakeTorque(int w, const T& spin, double h) const {
   const WheelContact& c = state_->wheels[w];
-  if (c.brakeCapacity <= 0) return 0.0;
+  if (c.brakeCapacity <= 0) return T(0.0);
   // Spring-damper on the spin since the wheel last slipped, saturated smoothly
   // at the available torque (a kink would make Newton cycle at the limit).
-  const double t = kBrakeStiffness * (c.brakeDeflection + h * spin) + kBrakeDamping * spin;
-  return -c.brakeCapacity * pm::tanh(t / c.brakeCapacity);
+  const T t = kBrakeStiffness * (c.brakeDeflection + h * spin) + kBrakeDamping * spin;
+  return -c.brakeCapacity * pm::tanh(T(t / c.brakeCapacity));
+}
+
+template <typename T>
+void VehicleForces::tyreForce(int w, const tyre::WheelKinematicsT<T>& k, double h, std::optional<T> load,
+                              tyre::TyreOutputT<T>& out) const {
+  const WheelContact& c = state_->wheels[w];
+  tyre::ContactPlaneT<T> ground;
+  if (envelopes_[w].on && options_.groundInsideStep) {
+    ground = tyre::effectivePlane(envelopes_[w], c.profile, k.centre);
+  } else {
+    ground.valid = c.plane.valid;
+    ground.point = c.plane.point.cast<T>();
+    ground.normal = c.plane.normal.cast<T>();
+    ground.friction = c.plane.friction;
+  }
+  tyres_[w].evaluate(k, ground, c.slip, h, load, out);
 }
 
 void VehicleForces::planarLoads(mb::Data& d) {
@@ -336,24 +355,25 @@ void VehicleForces::planarLoads(mb::Data& d) {
   // those of the last accepted step, advanced once per step as the brake
   // spring is: a step's lag on a fifth of the load transfer, where a second
   // tyre evaluation per residual would cost a fifth of the step (RESULTS 6b).
-  const std::array<double, 4> shift = planarLoadShift(d.R[base].col(0), d.R[base].col(1));
+  const std::array<double, 4> shift = planarLoadShift<double>(d.R[base].col(0), d.R[base].col(1));
   for (int w = 0; w < 4; ++w) outputs_[w].modelLoad += shift[w];
 }
 
-std::array<double, 4> VehicleForces::planarLoadShift(const Eigen::Vector3d& forward, const Eigen::Vector3d& left) const {
+template <typename T>
+std::array<T, 4> VehicleForces::planarLoadShift(const tyre::Vec3T<T>& forward, const tyre::Vec3T<T>& left) const {
   const PlanarLoads& P = *vehicle_.planar;
-  double lateral[2] = {0, 0}, longitudinal = 0;
+  T lateral[2] = {T(0.0), T(0.0)}, longitudinal = T(0.0);
   for (int w = 0; w < 4; ++w) {
     lateral[w / 2] += left.dot(state_->wheels[w].acceptedForce);
     longitudinal += forward.dot(state_->wheels[w].acceptedForce);
   }
-  std::array<double, 4> out{};
+  std::array<T, 4> out{T(0.0), T(0.0), T(0.0), T(0.0)};
   for (int a = 0; a < 2; ++a) {
-    const double shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
+    const T shift = lateral[a] * P.rollCentreHeight[a] / P.track[a];  // onto the right wheel in a left turn
     out[2 * a] = -shift;
     out[2 * a + 1] = shift;
   }
-  const double pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
+  const T pitch = 0.5 * longitudinal * P.axisHeight / P.wheelbase;  // onto the rear when driving
   for (int w = 0; w < 4; ++w) out[w] += w < 2 ? -pitch : pitch;
   return out;
 }
@@ -460,32 +480,33 @@ double VehicleForces::engineSpeed(const mb::Data& d) const {
   return (d.vel[e].tail<3>() - d.Xup[e].E * d.vel[parent].tail<3>()).x();
 }
 
-double VehicleForces::drivenSpeed(const std::array<double, 4>& spins) const {
-  double sum = 0;
+template <typename T>
+T VehicleForces::drivenSpeed(const std::array<T, 4>& spins) const {
+  T sum = T(0.0);
   for (int w : driven_) sum += spins[w];  // about the spindle's y: + rolls forwards on either side
-  return driven_.empty() ? 0.0 : sum / static_cast<double>(driven_.size());
+  return driven_.empty() ? T(0.0) : T(sum / static_cast<double>(driven_.size()));
 }
 
 void VehicleForces::powertrain(mb::Data& d, double h, const std::array<double, 4>& spins) {
   d.jointForce(vehicle_.layout.engineV) += drivelineTorques(engineSpeed(d), spins, h);
 }
 
-VehicleForces::DrivelineTorques VehicleForces::drivelineAt(double engine, const std::array<double, 4>& spins,
-                                                          double h) const {
+template <typename S>
+VehicleForces::DrivelineTorquesT<S> VehicleForces::drivelineAt(const S& engine, const std::array<S, 4>& spins,
+                                                               double h) const {
   const PowertrainSpec& P = *vehicle_.spec.powertrain;
   const DrivelineState& s = state_->driveline;
-  DrivelineTorques T;
+  DrivelineTorquesT<S> T;
   T.output = drivenSpeed(spins);
   T.engine = engineTorque(P.engine, engine, s.command.throttle);
   // In neutral the clutch turns the gearbox's input shaft alone (its inertia is the engine's).
-  T.clutch = s.command.ratio == 0.0
-                 ? 0.0
-                 : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
-                                engine - s.command.ratio * T.output, h);
+  T.clutch = s.command.ratio == 0.0 ? S(0.0)
+                                    : clutchTorque(P.clutch, s.command.clutchCapacity, s.clutchDeflection,
+                                                   S(engine - s.command.ratio * T.output), h);
   // The differential: an equal share of the gearbox output for each driven
   // wheel (the torque balance of an open differential), plus the viscous
   // coupling's torque from the faster wheels to the slower.
-  const double share = s.command.ratio * T.clutch / static_cast<double>(driven_.size());
+  const S share = s.command.ratio * T.clutch / static_cast<double>(driven_.size());
   for (int w : driven_) T.drive[w] = share - P.viscousCoupling * (spins[w] - T.output);
   return T;
 }
@@ -577,5 +598,16 @@ void VehicleForces::markAccepted(double t) {
   state_->lastAccepted = t;
   state_->planesReady = true;
 }
+
+#define BDFCAR_FORCE_LAWS(T)                                                                                     \
+  template T VehicleForces::brakeTorque(int, const T&, double) const;                                            \
+  template void VehicleForces::tyreForce(int, const tyre::WheelKinematicsT<T>&, double, std::optional<T>,        \
+                                         tyre::TyreOutputT<T>&) const;                                           \
+  template std::array<T, 4> VehicleForces::planarLoadShift(const tyre::Vec3T<T>&, const tyre::Vec3T<T>&) const; \
+  template T VehicleForces::drivenSpeed(const std::array<T, 4>&) const;                                          \
+  template VehicleForces::DrivelineTorquesT<T> VehicleForces::drivelineAt(const T&, const std::array<T, 4>&, double) const;
+BDFCAR_FORCE_LAWS(double)
+BDFCAR_FORCE_LAWS(ad::Dual)
+#undef BDFCAR_FORCE_LAWS
 
 }  // namespace bdfcar::vehicle

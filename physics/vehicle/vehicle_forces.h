@@ -117,8 +117,17 @@ class VehicleForces final : public mb::ForceProvider {
   // The tyre at k on the wheel's contact plane (outputs()[w] holds it after).
   const tyre::TyreOutput& evaluateTyre(int w, const tyre::WheelKinematics& k, double h, std::optional<double> load);
   // The brake's torque about the spin axis (+ with the spin) at a spin
-  // relative to the carrier, h after the last accepted step.
-  double brakeTorque(int w, double relativeSpin, double h) const;
+  // relative to the carrier, h after the last accepted step; T double or
+  // ad::Dual (below).
+  template <typename T>
+  T brakeTorque(int w, const T& relativeSpin, double h) const;
+  // The tyre as evaluateTyre takes it, for a scalar type T (double, or
+  // ad::Dual where a closed form differentiates its residual: autodiff.h),
+  // nothing stored: on the ground the residual sees (the step's plane, or
+  // an enveloping tyre's cams at k's centre).
+  template <typename T>
+  void tyreForce(int w, const tyre::WheelKinematicsT<T>& k, double h, std::optional<T> load,
+                 tyre::TyreOutputT<T>& out) const;
   // Advances wheel w's states over an accepted step of length h (transient
   // slips, brake spring, the accepted tyre force) and casts its next contact
   // plane, hNext ahead; then markAccepted(t) once for the four.
@@ -138,19 +147,25 @@ class VehicleForces final : public mb::ForceProvider {
   double drivelineTorques(double engineSpeed, const std::array<double, 4>& spins, double h);
   void acceptDriveline(double engineSpeed, const std::array<double, 4>& spins, double h);
   // The driveline's torques at the crank's and the wheels' speeds, from its
-  // state, nothing stored (drivelineTorques stores them there).
-  struct DrivelineTorques {
-    double engine = 0, clutch = 0, output = 0;  // N m, N m, rad/s (the differential's output speed)
-    std::array<double, 4> drive{};              // N m, the driven wheels'
+  // state, nothing stored (drivelineTorques stores them there); T double or
+  // ad::Dual.
+  template <typename T>
+  struct DrivelineTorquesT {
+    T engine = T(0.0), clutch = T(0.0), output = T(0.0);  // N m, N m, rad/s (the differential's output speed)
+    std::array<T, 4> drive{T(0.0), T(0.0), T(0.0), T(0.0)};  // N m, the driven wheels'
   };
-  DrivelineTorques drivelineAt(double engine, const std::array<double, 4>& spins, double h) const;
+  using DrivelineTorques = DrivelineTorquesT<double>;
+  template <typename T>
+  DrivelineTorquesT<T> drivelineAt(const T& engine, const std::array<T, 4>& spins, double h) const;
   const std::vector<int>& drivenWheels() const { return driven_; }
   void markAccepted(double t);
   double sinceAccepted(double t) const { return std::max(0.0, t - state_->lastAccepted); }
   // A planar model's load from its roll centres and pitch axis: the share of
   // each wheel's load the accepted tyre forces move (the base's forward and
   // left axes in the world).
-  std::array<double, 4> planarLoadShift(const Eigen::Vector3d& forward, const Eigen::Vector3d& left) const;
+  // T double or ad::Dual.
+  template <typename T>
+  std::array<T, 4> planarLoadShift(const tyre::Vec3T<T>& forward, const tyre::Vec3T<T>& left) const;
   // A model's own outputs of wheel w (the closed-form planar car's loads and corner springs).
   WheelOutput& output(int w) { return outputs_[w]; }
 
@@ -213,7 +228,8 @@ class VehicleForces final : public mb::ForceProvider {
   void powertrain(mb::Data& data, double h, const std::array<double, 4>& spins);
   double engineSpeed(const mb::Data& data) const;
   // Mean of the driven wheels' spins relative to their carriers (spins: all four), + forward.
-  double drivenSpeed(const std::array<double, 4>& spins) const;
+  template <typename T>
+  T drivenSpeed(const std::array<T, 4>& spins) const;
   void applyDriveTorque(mb::Data& data, int wheel, const tyre::WheelKinematics& k) const;
   void addDriveTorqueColumn(const mb::Model& model, const mb::Data& data, int wheel, const tyre::WheelKinematics& k,
                             double scale, Eigen::Ref<Eigen::VectorXd> out) const;
