@@ -34,6 +34,12 @@ int startupHalvings(double h) { return std::clamp(static_cast<int>(std::ceil(std
 // bits: the same h' for the iteration matrix within 1e-9 of it (0: none).
 bool sameHPrime(double hp, double other) { return other != 0 && std::abs(hp - other) <= 1e-9 * hp; }
 
+// A vector of the system's into one of the same size (the integrator's own
+// and its history's are sized once, bindHistory): a plain copy, without an
+// Eigen assignment's size check and set-up, which cost more than the copy
+// of a closed form's 9 to 15 coordinates.
+void copyInto(const Vec& from, Vec& to) { std::copy_n(from.data(), from.size(), to.data()); }
+
 // A first Newton iterate this many refineError from the predictor ends the
 // attempt as refined (BdfIntegrator::newton, refineEarly).
 constexpr double kFirstIterateMiss = 2.0;
@@ -669,8 +675,8 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
                      {xiQ_.data(), xiV_.data(), dPred_.data(), vPred_.data(), aPred_.data(), d_.data(), v_.data(),
                       a_.data()});
   }
-  lamPred_ = node(0).lambda;
-  lam_ = lamPred_;
+  copyInto(node(0).lambda, lamPred_);
+  copyInto(lamPred_, lam_);
   dae_.retract(node(0).q, dPred_, q_);
   dae_.beginStep(tNew, q_, vPred_);
 
@@ -720,9 +726,9 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
   SolutionPoint& p = st_->push();
   p.t = tNew;
   dae_.retract(node(1).q, d_, p.q);
-  p.v = v_;
-  p.a = a_;
-  p.lambda = lam_;
+  copyInto(v_, p.v);
+  copyInto(a_, p.a);
+  copyInto(lam_, p.lambda);
   ++st_->counters.substeps;
   if (dae_.acceptStep(tNew, h, p.q, p.v, rep.message) != EvalStatus::Ok) rep.status = StepStatus::StateCheckFailed;
   return rep;

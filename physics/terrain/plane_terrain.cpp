@@ -14,9 +14,11 @@ PlaneTerrain::PlaneTerrain(const Eigen::Vector3d& point, const Eigen::Vector3d& 
 Hit PlaneTerrain::castRay(const Eigen::Vector3d& from, const Eigen::Vector3d& direction, double maxDistance) const {
   Hit h;
   h.friction = friction_;
-  const double length = direction.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) return h;
-  const Eigen::Vector3d d = direction / length;
+  // A unit direction as it is (most rays are straight down: no square root
+  // and division, the same d as direction / 1).
+  const double length2 = direction.squaredNorm();
+  if (!(length2 > 0.0) || !std::isfinite(length2)) return h;
+  const Eigen::Vector3d d = length2 == 1.0 ? direction : Eigen::Vector3d(direction / std::sqrt(length2));
   const double approach = normal_.dot(d);
   // Parallel rays (also those lying in the plane) have no single first hit.
   if (approach == 0.0) return h;
