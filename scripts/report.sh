@@ -172,10 +172,16 @@ bench_table() {
     echo "the eq. 3.8 matrix and with the Jacobian blocks; evaluateJacobian (finite differences of the"
     echo "residual, every 200 steps) is amortised; the rest of newton is the residual."
     echo
+    # Self instructions by function: its qualified name without its return
+    # type and template arguments, but for a residual's two instances (T
+    # double: the residual; T ad::Dual, marked [dual]: its Jacobian).
     selfIr() {
       callgrind_annotate --auto=no --threshold=100 "$1" 2> /dev/null | sed 's/(anonymous namespace)/{anonymous}/g' |
-        sed -nE 's/^ *([0-9,]+) +\([ 0-9.%]+\) +[^:]*:([^ (<]*).*/\2 \1/p' | tr -d ',' |
-        awk '{ a[$1] += $2 } END { for (k in a) print k, a[k] }'
+        sed -nE 's/^ *([0-9,]+) +\([ 0-9.%]+\) +[^:]*:(.*)/\1 \2/p' | tr -d ',' |
+        awk '{ n = $1; name = substr($0, length($1) + 2); cut = index(name, "("); if (cut) name = substr(name, 1, cut - 1)
+               gsub(/<bdfcar::ad::Dual>/, "[dual]", name); while (gsub(/<[^<>]*>/, "", name)) {}
+               k = split(name, part, " "); a[part[k]] += n }
+             END { for (f in a) print f, a[f] }'
     }
     # A closed-form rung's self instructions per step, the functions above 2 %.
     profileTable() {
@@ -187,8 +193,11 @@ bench_table() {
     }
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
     echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
-    echo "residual (about one per step: Newton ends at the first iteration within tolerance), the tyres, and the BDF step's own vector work and back-substitution,"
-    echo "which the rungs share: what is left to cut for the 6k target."
+    echo "equations (PlanarCar::equations: about 1.2 residuals a step, Newton ending at the first iteration"
+    echo "within tolerance; their [dual] instance, the exact Jacobian every 200 steps, is amortised), the"
+    echo "tyres, the BDF step's own work (substep, newton, the kernels of bdf_kernels.h) and the step's"
+    echo "acceptance (each wheel's ground for the next step, its slip state). No function holds a quarter"
+    echo "of the step: the 6k target asks for every part halved, not one removed."
     echo
     profileTable planar
     echo
