@@ -77,11 +77,14 @@ struct IntegratorState {
   int head = 0;   // ring slot of node(0)
   int count = 0;  // points in the history (BDF: up to order + 1; explicit: one)
   Counters counters;
-  const SolutionPoint& node(int i) const { return ring[(head + i) % kSlots]; }
-  SolutionPoint& node(int i) { return ring[(head + i) % kSlots]; }
+  // (head + i) mod kSlots for 0 <= head, i < kSlots: one compare, not a
+  // division by 7 (a step asks for its nodes a few dozen times).
+  const SolutionPoint& node(int i) const { return ring[slot(i)]; }
+  SolutionPoint& node(int i) { return ring[slot(i)]; }
+  int slot(int i) const { return head + i < kSlots ? head + i : head + i - kSlots; }
   // A new newest point (the oldest slot reused): node(0) is then it.
   SolutionPoint& push() {
-    head = (head + kSlots - 1) % kSlots;
+    head = head == 0 ? kSlots - 1 : head - 1;
     count = std::min(count + 1, kSlots);
     return node(0);
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 
+#include "integrator/all_finite.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/kinematics.h"
@@ -55,7 +56,7 @@ void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
 // last residual evaluation: no extra kinematic pass on the step's path.
 integ::EvalStatus MultibodyDae::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                            integ::Message& msg) {
-  if (!q.allFinite() || !v.allFinite()) {
+  if (!integ::allFinite(q) || !integ::allFinite(v)) {
     msg.set("non-finite state at t = %.6g s", t);
     return integ::EvalStatus::Fatal;
   }
@@ -93,7 +94,7 @@ integ::EvalStatus MultibodyDae::residual(double t, const integ::Vec& q, const in
     out.phiDot = data_.phiDot;
     out.phiDDot = data_.phiDDot;
   }
-  if (!out.F.allFinite()) {
+  if (!integ::allFinite(out.F)) {
     msg.set("non-finite equations of motion at t = %.6g s", t);
     return integ::EvalStatus::Recoverable;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "integrator/all_finite.h"
 #include "multibody/joint.h"
 #include "multibody/model_error.h"
 
@@ -88,7 +89,7 @@ void ClosedFormCar::addSpinChange(int w, double dv, double per, double h, const 
 integ::EvalStatus ClosedFormCar::residual(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a,
                                           const integ::Vec&, integ::Residual& out, bool, integ::Message& msg) {
   equationsOf(t, q.data(), v.data(), a, out.F.data());
-  if (!out.F.allFinite()) {
+  if (!integ::allFinite(out.F)) {
     msg.set("non-finite equations of motion at t = %.6g s", t);
     return integ::EvalStatus::Recoverable;
   }
@@ -257,7 +258,7 @@ integ::SolutionPoint ClosedFormCar::multibodyPoint(const integ::SolutionPoint& p
 
 integ::EvalStatus ClosedFormCar::acceptWheels(double t, double h, const integ::Vec& q, const integ::Vec& v,
                                               integ::Message& msg) {
-  if (!q.allFinite() || !v.allFinite()) {
+  if (!integ::allFinite(q) || !integ::allFinite(v)) {
     msg.set("non-finite state at t = %.6g s", t);
     return integ::EvalStatus::Fatal;
   }
