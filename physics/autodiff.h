@@ -15,7 +15,9 @@
 //
 // The transcendental functions keep portable_math.h's promise: the value
 // and the derivative both from SLEEF (pm::), the same bits on every machine
-// of a build flavour; sqrt and division are IEEE-exact. sqrt0 and norm0
+// of a build flavour; sqrt is IEEE-exact, a quotient's value a times 1 / b
+// (within an ulp or two of a / b: only Jacobians are computed in Duals, never
+// the residual the step converges on). sqrt0 and norm0
 // give a zero derivative where the argument is zero (a straight run's
 // lateral slip, a car at rest: the plain square root's derivative there is
 // 0/0).

@@ -91,10 +91,12 @@ bench_table() {
                "sedan planar <=6000" "sedan planar -  fidelity.planar_equations=multibody" \
                "sedan planar - fidelity.newton_stops_within_tolerance=false" "sedan auto -"; do
       set -- $run
-      v=$1 f=$2 target=$3 extra=()
-      [ -n "${4:-}" ] && extra=(--set "$4")
+      v=$1 f=$2 target=$3 extra=() tag=""
+      [ -n "${4:-}" ] && extra=(--set "$4") && tag=".${4//[^a-z0-9]/_}"
+      # (the run's tag named outside ir(): inside it $4 is ir's own, empty,
+      # and every variant's profile overwrote the default run's)
       ir() {
-        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f${4:+.${4//[^a-z0-9]/_}}.$1" "$build/app/bdfcar" run \
+        valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.$v.$f$tag.$1" "$build/app/bdfcar" run \
           assets/scenarios/jturn.toml --vehicle "assets/vehicles/$v.toml" --fidelity "$f" "${extra[@]}" --duration "$1" 2>&1 |
           awk '/Collected/ { print $4 }'
       }
