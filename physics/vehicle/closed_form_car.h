@@ -80,9 +80,11 @@ class ClosedFormCar : public integ::Dae {
   bool hasFastColumnParts() const override { return true; }
   // F_q (along the retraction) and F_v exactly: the derived class's
   // equations evaluated once on dual numbers (autodiff.h), seeded with the
-  // tangent increments of the positions and the velocities (2 n directions;
-  // finite differences above kDirections / 2 coordinates). The force laws'
-  // states and inputs are those of the last residual (as its fast columns').
+  // tangent increments of the positions the equations read and the
+  // velocities, kDirections of them a pass (one pass for the planar rung,
+  // two for the kinematic); finite differences above 16 coordinates. The
+  // force laws' states and inputs are those of the last residual (as its
+  // fast columns').
   bool stateJacobian(double t, const integ::Vec& q, const integ::Vec& v, const integ::Vec& a, integ::Mat& Fq,
                      integ::Mat& Fv) override;
   // F = equations(q, v, a), non-finite F a recoverable failure.

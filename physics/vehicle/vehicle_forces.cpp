@@ -203,14 +203,14 @@ bool VehicleForces::levelProfile(tyre::RoadProfile& p, double zTop, double reach
 
 const tyre::ContactPlane& VehicleForces::groundAt(int w, const Eigen::Vector3d& centre) {
   const WheelContact& c = state_->wheels[w];
-  if (!envelopes_[w].on || !options_.groundInsideStep) return c.plane;
+  if (!groundFollowsWheel(w)) return c.plane;
   insideStep_[w] = tyre::effectivePlane(envelopes_[w], c.profile, centre);
   return insideStep_[w];
 }
 
 const tyre::ContactPlane& VehicleForces::latestGround(int w) const {
   const WheelContact& c = state_->wheels[w];
-  return envelopes_[w].on && options_.groundInsideStep ? insideStep_[w] : c.plane;
+  return groundFollowsWheel(w) ? insideStep_[w] : c.plane;
 }
 
 // Each spin's column by a forward difference of its wheel's tyre and brake
@@ -321,7 +321,7 @@ void VehicleForces::tyreForce(int w, const tyre::WheelKinematicsT<T>& k, double 
                               tyre::TyreOutputT<T>& out) const {
   const WheelContact& c = state_->wheels[w];
   tyre::ContactPlaneT<T> ground;
-  if (envelopes_[w].on && options_.groundInsideStep) {
+  if (groundFollowsWheel(w)) {  // as groundAt, in T
     ground = tyre::effectivePlane(envelopes_[w], c.profile, k.centre);
   } else {
     ground.valid = c.plane.valid;

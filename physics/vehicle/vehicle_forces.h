@@ -210,6 +210,9 @@ class VehicleForces final : public mb::ForceProvider {
   // Fills p (its line and samples set) when the terrain says the road
   // under it is level; false otherwise.
   bool levelProfile(tyre::RoadProfile& p, double zTop, double reach) const;
+  // Whether wheel w's ground follows the wheel inside the step (an
+  // enveloping tyre's cams on the step's profile) rather than the step's plane.
+  bool groundFollowsWheel(int w) const { return envelopes_[w].on && options_.groundInsideStep; }
   // The ground a tyre at centre feels in a residual: the step's plane (a
   // point contact), or the envelope's at centre (kept in insideStep_[w]).
   const tyre::ContactPlane& groundAt(int w, const Eigen::Vector3d& centre);
