@@ -13,6 +13,12 @@
 // vector instructions over the 16 derivatives. It is an Eigen scalar
 // (NumTraits below), so the closed forms' vector algebra runs on it as is.
 //
+// The width is a template parameter: a part of the equations that reads
+// only a few of the state's directions (a kinematic corner: its travel and
+// travel rate) runs on a narrow DualN and its results are lifted onto the
+// wide directions by the chain rule (ad::lift), instead of carrying 16
+// derivatives of which 14 are zero through every operation.
+//
 // The transcendental functions keep portable_math.h's promise: the value
 // and the derivative both from SLEEF (pm::), the same bits on every machine
 // of a build flavour; sqrt is IEEE-exact, a quotient's value a times 1 / b
@@ -36,114 +42,146 @@ namespace bdfcar::ad {
 
 inline constexpr int kDirections = 16;
 
-struct Dual {
+template <int N>
+struct DualN {
+  static constexpr int kWidth = N;
   double val = 0.0;
-  std::array<double, kDirections> der{};  // d val / d direction k
-  Dual() = default;
-  Dual(double x) : val(x) {}  // NOLINT: a constant converts implicitly (as a double to a double)
+  std::array<double, N> der{};  // d val / d direction k
+  DualN() = default;
+  DualN(double x) : val(x) {}  // NOLINT: a constant converts implicitly (as a double to a double)
   double value() const { return val; }
 
-  Dual& operator+=(const Dual& b) {
+  DualN& operator+=(const DualN& b) {
     val += b.val;
-    for (int k = 0; k < kDirections; ++k) der[k] += b.der[k];
+    for (int k = 0; k < N; ++k) der[k] += b.der[k];
     return *this;
   }
-  Dual& operator-=(const Dual& b) {
+  DualN& operator-=(const DualN& b) {
     val -= b.val;
-    for (int k = 0; k < kDirections; ++k) der[k] -= b.der[k];
+    for (int k = 0; k < N; ++k) der[k] -= b.der[k];
     return *this;
   }
-  Dual& operator*=(const Dual& b) {
-    for (int k = 0; k < kDirections; ++k) der[k] = der[k] * b.val + val * b.der[k];
+  DualN& operator*=(const DualN& b) {
+    for (int k = 0; k < N; ++k) der[k] = der[k] * b.val + val * b.der[k];
     val *= b.val;
     return *this;
   }
-  Dual& operator/=(const Dual& b) {
+  DualN& operator/=(const DualN& b) {
     const double inv = 1.0 / b.val, q = val * inv;
-    for (int k = 0; k < kDirections; ++k) der[k] = (der[k] - q * b.der[k]) * inv;
+    for (int k = 0; k < N; ++k) der[k] = (der[k] - q * b.der[k]) * inv;
     val = q;
     return *this;
   }
-  Dual& operator+=(double b) {
+  DualN& operator+=(double b) {
     val += b;
     return *this;
   }
-  Dual& operator-=(double b) {
+  DualN& operator-=(double b) {
     val -= b;
     return *this;
   }
-  Dual& operator*=(double b) {
+  DualN& operator*=(double b) {
     val *= b;
     for (double& d : der) d *= b;
     return *this;
   }
-  Dual& operator/=(double b) {
+  DualN& operator/=(double b) {
     val /= b;
     for (double& d : der) d /= b;
     return *this;
   }
 };
 
+// The Jacobian's number: as many directions as a pass of stateJacobian.
+using Dual = DualN<kDirections>;
+
 // The chain rule through f at x: value fx, slope dfdx.
-inline Dual chain(const Dual& x, double fx, double dfdx) {
-  Dual r(fx);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = dfdx * x.der[k];
+template <int N>
+inline DualN<N> chain(const DualN<N>& x, double fx, double dfdx) {
+  DualN<N> r(fx);
+  for (int k = 0; k < N; ++k) r.der[k] = dfdx * x.der[k];
   return r;
 }
 
 // Binary operations build their result afresh (no operand can alias it:
 // the loops vectorise without overlap checks).
-inline Dual operator-(const Dual& a) { return chain(a, -a.val, -1.0); }
-inline Dual operator+(const Dual& a, const Dual& b) {
-  Dual r(a.val + b.val);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = a.der[k] + b.der[k];
+template <int N>
+inline DualN<N> operator-(const DualN<N>& a) {
+  return chain(a, -a.val, -1.0);
+}
+template <int N>
+inline DualN<N> operator+(const DualN<N>& a, const DualN<N>& b) {
+  DualN<N> r(a.val + b.val);
+  for (int k = 0; k < N; ++k) r.der[k] = a.der[k] + b.der[k];
   return r;
 }
-inline Dual operator-(const Dual& a, const Dual& b) {
-  Dual r(a.val - b.val);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = a.der[k] - b.der[k];
+template <int N>
+inline DualN<N> operator-(const DualN<N>& a, const DualN<N>& b) {
+  DualN<N> r(a.val - b.val);
+  for (int k = 0; k < N; ++k) r.der[k] = a.der[k] - b.der[k];
   return r;
 }
-inline Dual operator*(const Dual& a, const Dual& b) {
-  Dual r(a.val * b.val);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = a.der[k] * b.val + a.val * b.der[k];
+template <int N>
+inline DualN<N> operator*(const DualN<N>& a, const DualN<N>& b) {
+  DualN<N> r(a.val * b.val);
+  for (int k = 0; k < N; ++k) r.der[k] = a.der[k] * b.val + a.val * b.der[k];
   return r;
 }
-inline Dual operator/(const Dual& a, const Dual& b) {
+template <int N>
+inline DualN<N> operator/(const DualN<N>& a, const DualN<N>& b) {
   const double inv = 1.0 / b.val;
-  Dual r(a.val * inv);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = (a.der[k] - r.val * b.der[k]) * inv;
+  DualN<N> r(a.val * inv);
+  for (int k = 0; k < N; ++k) r.der[k] = (a.der[k] - r.val * b.der[k]) * inv;
   return r;
 }
-inline Dual operator+(const Dual& a, double b) {
-  Dual r = a;
+template <int N>
+inline DualN<N> operator+(const DualN<N>& a, double b) {
+  DualN<N> r = a;
   r.val += b;
   return r;
 }
-inline Dual operator-(const Dual& a, double b) {
-  Dual r = a;
+template <int N>
+inline DualN<N> operator-(const DualN<N>& a, double b) {
+  DualN<N> r = a;
   r.val -= b;
   return r;
 }
-inline Dual operator*(const Dual& a, double b) { return chain(a, a.val * b, b); }
-inline Dual operator/(const Dual& a, double b) {
-  Dual r(a.val / b);
-  for (int k = 0; k < kDirections; ++k) r.der[k] = a.der[k] / b;
+template <int N>
+inline DualN<N> operator*(const DualN<N>& a, double b) {
+  return chain(a, a.val * b, b);
+}
+template <int N>
+inline DualN<N> operator/(const DualN<N>& a, double b) {
+  DualN<N> r(a.val / b);
+  for (int k = 0; k < N; ++k) r.der[k] = a.der[k] / b;
   return r;
 }
-inline Dual operator+(double a, const Dual& b) { return b + a; }
-inline Dual operator-(double a, const Dual& b) { return chain(b, a - b.val, -1.0); }
-inline Dual operator*(double a, const Dual& b) { return chain(b, a * b.val, a); }
-inline Dual operator/(double a, const Dual& b) {
+template <int N>
+inline DualN<N> operator+(double a, const DualN<N>& b) {
+  return b + a;
+}
+template <int N>
+inline DualN<N> operator-(double a, const DualN<N>& b) {
+  return chain(b, a - b.val, -1.0);
+}
+template <int N>
+inline DualN<N> operator*(double a, const DualN<N>& b) {
+  return chain(b, a * b.val, a);
+}
+template <int N>
+inline DualN<N> operator/(double a, const DualN<N>& b) {
   const double q = a / b.val;
   return chain(b, q, -q / b.val);
 }
 
 // Comparisons by value (the branches of the force laws).
-#define BDFCAR_DUAL_COMPARISON(op)                                             \
-  inline bool operator op(const Dual& a, const Dual& b) { return a.val op b.val; } \
-  inline bool operator op(const Dual& a, double b) { return a.val op b; }         \
-  inline bool operator op(double a, const Dual& b) { return a op b.val; }
+#define BDFCAR_DUAL_COMPARISON(op)                                                         \
+  template <int N>                                                                         \
+  inline bool operator op(const DualN<N>& a, const DualN<N>& b) { return a.val op b.val; } \
+  template <int N>                                                                         \
+  inline bool operator op(const DualN<N>& a, double b) { return a.val op b; }              \
+  template <int N>                                                                         \
+  inline bool operator op(double a, const DualN<N>& b) { return a op b.val; }
 BDFCAR_DUAL_COMPARISON(<)
 BDFCAR_DUAL_COMPARISON(>)
 BDFCAR_DUAL_COMPARISON(<=)
@@ -154,28 +192,56 @@ BDFCAR_DUAL_COMPARISON(!=)
 
 // Found by argument-dependent lookup from code written for T (`using
 // std::sqrt; sqrt(x)`) and from Eigen's norms.
-inline Dual sqrt(const Dual& x) {
+template <int N>
+inline DualN<N> sqrt(const DualN<N>& x) {
   const double r = std::sqrt(x.val);
   return chain(x, r, 0.5 / r);
 }
-inline Dual abs(const Dual& x) { return x.val < 0 ? -x : x; }
-inline Dual abs2(const Dual& x) { return x * x; }
-inline Dual pow(const Dual& x, double e) {
+template <int N>
+inline DualN<N> abs(const DualN<N>& x) {
+  return x.val < 0 ? -x : x;
+}
+template <int N>
+inline DualN<N> abs2(const DualN<N>& x) {
+  return x * x;
+}
+template <int N>
+inline DualN<N> pow(const DualN<N>& x, double e) {
   const double p = std::pow(x.val, e);
   return chain(x, p, e * std::pow(x.val, e - 1.0));
 }
 
 template <typename T>
-inline constexpr bool isDual = std::is_same_v<std::remove_cvref_t<T>, Dual>;
+struct IsDual : std::false_type {};
+template <int N>
+struct IsDual<DualN<N>> : std::true_type {};
+template <typename T>
+inline constexpr bool isDual = IsDual<std::remove_cvref_t<T>>::value;
 
 // The value of a double or a Dual.
 inline double value(double x) { return x; }
-inline double value(const Dual& x) { return x.val; }
+template <int N>
+inline double value(const DualN<N>& x) {
+  return x.val;
+}
 // x with direction k seeded: x + e_k.
-inline Dual seeded(double x, int k) {
-  Dual d(x);
+template <int N = kDirections>
+inline DualN<N> seeded(double x, int k) {
+  DualN<N> d(x);
   d.der[k] = 1.0;
   return d;
+}
+
+// y = f(x, ...) computed on a narrow DualN<M> whose directions are the
+// scalars x_m (seeded one each), onto the wide directions those scalars
+// carry: dy/dk = sum_m dy/dx_m dx_m/dk (the chain rule, exact).
+template <int M, int N>
+inline DualN<N> lift(const DualN<M>& y, const std::array<const DualN<N>*, static_cast<std::size_t>(M)>& x) {
+  DualN<N> r(y.val);
+  for (int m = 0; m < M; ++m)
+    if (y.der[m] != 0.0)
+      for (int k = 0; k < N; ++k) r.der[k] += y.der[m] * x[m]->der[k];
+  return r;
 }
 
 // The sign of the value (+1, -1, 0): a constant.
@@ -185,9 +251,10 @@ inline double sign(const T& x) {
   return (v > 0) - (v < 0);
 }
 
-// The type of an expression of a and b: Dual if either is.
+// The type of an expression of a and b: the Dual if either is one.
 template <typename A, typename B>
-using Common = std::conditional_t<isDual<A> || isDual<B>, Dual, double>;
+using Common = std::conditional_t<isDual<A>, std::remove_cvref_t<A>,
+                                  std::conditional_t<isDual<B>, std::remove_cvref_t<B>, double>>;
 
 // min, max and clamp by value, choosing as std::min, std::max and
 // std::clamp do (the same argument on a tie); the chosen one keeps its
@@ -210,13 +277,17 @@ inline Common<X, Common<L, H>> clamp(const X& x, const L& lo, const H& hi) {
 
 // sqrt with a zero derivative at zero.
 inline double sqrt0(double x) { return std::sqrt(x); }
-inline Dual sqrt0(const Dual& x) {
+template <int N>
+inline DualN<N> sqrt0(const DualN<N>& x) {
   const double r = std::sqrt(x.val);
-  return r > 0 ? chain(x, r, 0.5 / r) : Dual(r);
+  return r > 0 ? chain(x, r, 0.5 / r) : DualN<N>(r);
 }
 // hypot: std::hypot's bits for doubles, sqrt0 of the sum of squares for Duals.
 inline double hypot(double a, double b) { return std::hypot(a, b); }
-inline Dual hypot(const Dual& a, const Dual& b) { return sqrt0(a * a + b * b); }
+template <int N>
+inline DualN<N> hypot(const DualN<N>& a, const DualN<N>& b) {
+  return sqrt0(a * a + b * b);
+}
 // A vector's norm with a zero derivative at the zero vector.
 template <typename Derived>
 inline typename Derived::Scalar norm0(const Eigen::MatrixBase<Derived>& v) {
@@ -225,14 +296,17 @@ inline typename Derived::Scalar norm0(const Eigen::MatrixBase<Derived>& v) {
 
 }  // namespace bdfcar::ad
 
-// Dual as an Eigen scalar, and its products with doubles.
+// Dual as an Eigen scalar, and its products with doubles. Its costs are the
+// wide Dual's at every width, so that Eigen unrolls (and so orders its sums)
+// alike: a narrow DualN's derivatives lifted by ad::lift are the wide one's,
+// bit for bit.
 namespace Eigen {
-template <>
-struct NumTraits<bdfcar::ad::Dual> : NumTraits<double> {
-  using Real = bdfcar::ad::Dual;
-  using NonInteger = bdfcar::ad::Dual;
-  using Nested = bdfcar::ad::Dual;
-  using Literal = bdfcar::ad::Dual;
+template <int N>
+struct NumTraits<bdfcar::ad::DualN<N>> : NumTraits<double> {
+  using Real = bdfcar::ad::DualN<N>;
+  using NonInteger = bdfcar::ad::DualN<N>;
+  using Nested = bdfcar::ad::DualN<N>;
+  using Literal = bdfcar::ad::DualN<N>;
   enum {
     IsComplex = 0,
     IsInteger = 0,
@@ -243,50 +317,61 @@ struct NumTraits<bdfcar::ad::Dual> : NumTraits<double> {
     MulCost = 2 * bdfcar::ad::kDirections + 1
   };
 };
-template <typename BinaryOp>
-struct ScalarBinaryOpTraits<bdfcar::ad::Dual, double, BinaryOp> {
-  using ReturnType = bdfcar::ad::Dual;
+template <int N, typename BinaryOp>
+struct ScalarBinaryOpTraits<bdfcar::ad::DualN<N>, double, BinaryOp> {
+  using ReturnType = bdfcar::ad::DualN<N>;
 };
-template <typename BinaryOp>
-struct ScalarBinaryOpTraits<double, bdfcar::ad::Dual, BinaryOp> {
-  using ReturnType = bdfcar::ad::Dual;
+template <int N, typename BinaryOp>
+struct ScalarBinaryOpTraits<double, bdfcar::ad::DualN<N>, BinaryOp> {
+  using ReturnType = bdfcar::ad::DualN<N>;
 };
 }  // namespace Eigen
 
 // SLEEF's functions of a Dual: the chain rule with SLEEF's derivatives.
 namespace bdfcar::pm {
 
-inline ad::Dual sin(const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> sin(const ad::DualN<N>& x) {
   const SinCos r = sincos(x.val);
   return ad::chain(x, r.s, r.c);
 }
-inline ad::Dual cos(const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> cos(const ad::DualN<N>& x) {
   const SinCos r = sincos(x.val);
   return ad::chain(x, r.c, -r.s);
 }
+template <int N>
 struct DualSinCos {
-  ad::Dual s, c;
+  ad::DualN<N> s, c;
 };
-inline DualSinCos sincos(const ad::Dual& x) {
+template <int N>
+inline DualSinCos<N> sincos(const ad::DualN<N>& x) {
   const SinCos r = sincos(x.val);
   return {ad::chain(x, r.s, r.c), ad::chain(x, r.c, -r.s)};
 }
-inline ad::Dual tan(const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> tan(const ad::DualN<N>& x) {
   const double t = tan(x.val);
   return ad::chain(x, t, 1.0 + t * t);
 }
-inline ad::Dual atan(const ad::Dual& x) { return ad::chain(x, atan(x.val), 1.0 / (1.0 + x.val * x.val)); }
-inline ad::Dual atan2(const ad::Dual& y, const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> atan(const ad::DualN<N>& x) {
+  return ad::chain(x, atan(x.val), 1.0 / (1.0 + x.val * x.val));
+}
+template <int N>
+inline ad::DualN<N> atan2(const ad::DualN<N>& y, const ad::DualN<N>& x) {
   const double a = y.val, b = x.val, r2 = a * a + b * b;
-  ad::Dual r(atan2(a, b));
-  for (int k = 0; k < ad::kDirections; ++k) r.der[k] = (b * y.der[k] - a * x.der[k]) / r2;
+  ad::DualN<N> r(atan2(a, b));
+  for (int k = 0; k < N; ++k) r.der[k] = (b * y.der[k] - a * x.der[k]) / r2;
   return r;
 }
-inline ad::Dual tanh(const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> tanh(const ad::DualN<N>& x) {
   const double t = tanh(x.val);
   return ad::chain(x, t, 1.0 - t * t);
 }
-inline ad::Dual exp(const ad::Dual& x) {
+template <int N>
+inline ad::DualN<N> exp(const ad::DualN<N>& x) {
   const double e = exp(x.val);
   return ad::chain(x, e, e);
 }

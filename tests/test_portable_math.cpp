@@ -1,8 +1,10 @@
 // The physics' own arithmetic (physics/portable_math.h, physics/autodiff.h)
 // against independent references: sin and cos against the C library's long
-// double ones, a dual number's derivatives against hand-derived ones.
+// double ones, a dual number's derivatives against hand-derived ones, a
+// narrow one's lifted derivatives against the wide one's.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -63,6 +65,31 @@ TEST(PortableMath, DualNumbersCarryTheDerivativesOfTheirFunctions) {
   EXPECT_TRUE(std::isnan(sqrt(zero * zero).der[3]));
   const Eigen::Matrix<ad::Dual, 3, 1> v(zero, zero, zero);
   EXPECT_EQ(ad::norm0(v).der[3], 0.0);
+}
+
+TEST(PortableMath, ANarrowDualLiftedCarriesTheWideOnesDerivatives) {
+  // g(x, y) on two directions, lifted onto the 16 that x and y carry (each a
+  // function of the wide directions), against g evaluated on the wide Dual
+  // directly: the chain rule by ad::lift is the derivative the wide
+  // evaluation takes operation by operation.
+  ad::Dual X(0.7), Y(1.3);
+  for (int k = 0; k < ad::kDirections; ++k) {
+    X.der[k] = 0.1 * k - 0.4;
+    Y.der[k] = k % 3 == 0 ? 0.0 : 1.0 / (1 + k);
+  }
+  auto g = [](const auto& x, const auto& y) {
+    return pm::sin(x) * y / (1.0 + x * x) + pm::exp(-y) * sqrt(x) - pm::atan2(y, x) + pm::tanh(x * y);
+  };
+  const ad::Dual wide = g(X, Y);
+  const ad::DualN<2> narrow = g(ad::seeded<2>(X.val, 0), ad::seeded<2>(Y.val, 1));
+  const ad::Dual lifted = ad::lift(narrow, std::array<const ad::Dual*, 2>{&X, &Y});
+  EXPECT_EQ(lifted.val, wide.val);
+  for (int k = 0; k < ad::kDirections; ++k)
+    EXPECT_NEAR(lifted.der[k], wide.der[k], 1e-14 * (1 + std::abs(wide.der[k]))) << "direction " << k;
+  // A direction neither input carries stays exactly zero.
+  ad::Dual Z = ad::seeded(0.3, 5);
+  const ad::Dual none = ad::lift(ad::seeded<2>(2.0, 0) * 3.0, std::array<const ad::Dual*, 2>{&Z, &Z});
+  for (int k = 0; k < ad::kDirections; ++k) EXPECT_EQ(none.der[k], k == 5 ? 3.0 : 0.0);
 }
 
 }  // namespace

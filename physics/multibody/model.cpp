@@ -84,6 +84,9 @@ template double ForceCurve::eval(const double&) const;
 template ad::Dual ForceCurve::eval(const ad::Dual&) const;
 template SpringDamper::PartsT<double> SpringDamper::parts(const double&, const double&) const;
 template SpringDamper::PartsT<ad::Dual> SpringDamper::parts(const ad::Dual&, const ad::Dual&) const;
+// A kinematic corner's springs on its two directions (KinematicCar::cornerMotion).
+template ad::DualN<2> ForceCurve::eval(const ad::DualN<2>&) const;
+template SpringDamper::PartsT<ad::DualN<2>> SpringDamper::parts(const ad::DualN<2>&, const ad::DualN<2>&) const;
 
 int Model::bodyIndex(const std::string& name) const {
   for (size_t i = 0; i < bodies.size(); ++i)

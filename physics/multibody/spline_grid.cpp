@@ -236,8 +236,7 @@ void SplineGrid::eval(const T& x, double y, RowCache& cache, SampleT<T>& out) co
 }
 
 template void SplineGrid::eval(const double&, double, SampleT<double>&) const;
-template void SplineGrid::eval(const ad::Dual&, double, SampleT<ad::Dual>&) const;
 template void SplineGrid::eval(const double&, double, RowCache&, SampleT<double>&) const;
-template void SplineGrid::eval(const ad::Dual&, double, RowCache&, SampleT<ad::Dual>&) const;
+template void SplineGrid::eval(const ad::DualN<2>&, double, RowCache&, SampleT<ad::DualN<2>>&) const;
 
 }  // namespace bdfcar::mb

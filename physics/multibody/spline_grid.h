@@ -29,7 +29,7 @@ class SplineGrid {
   static constexpr int kMaxComponents = 12;
 
   // One value of the function (every component) and its derivatives; T
-  // double, or ad::Dual (autodiff.h) where x is a dual number (a closed
+  // double, or a Dual (autodiff.h) where x is a dual number (a closed
   // form's Jacobian: the derivatives' own derivatives along x follow).
   template <typename T>
   struct SampleT {
@@ -51,7 +51,7 @@ class SplineGrid {
   const GridAxis& axisY() const { return y_; }
 
   // Every component at (x, y); y is ignored for one coordinate. No
-  // allocation. T double or ad::Dual (spline_grid.cpp).
+  // allocation. T double or ad::DualN<2> (spline_grid.cpp).
   template <typename T>
   void eval(const T& x, double y, SampleT<T>& out) const;
 

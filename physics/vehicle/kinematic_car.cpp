@@ -181,6 +181,35 @@ const KinematicCar::CornerPose& KinematicCar::cornerPose(int w, double travel) c
 template <typename T>
 void KinematicCar::cornerMotion(int w, const T& travel, const T& travelRate, CornerMotionT<T>& out,
                                 bool withRates) const {
+  if constexpr (!std::is_same_v<T, ad::Dual>) {
+    cornerMotionOn(w, travel, travelRate, out, withRates);
+  } else {
+    // A corner's motion reads two of the state's directions, its travel and
+    // travel rate: on those two, lifted onto the pass's (the same
+    // derivatives as on the wide Dual, a fraction of the work).
+    using D2 = ad::DualN<2>;
+    CornerMotionT<D2> narrow;
+    cornerMotionOn(w, ad::seeded<2>(travel.val, 0), ad::seeded<2>(travelRate.val, 1), narrow, withRates);
+    const std::array<const ad::Dual*, 2> x{&travel, &travelRate};
+    auto up = [&](const auto& from, auto& to) {
+      for (Eigen::Index i = 0; i < from.size(); ++i) to.data()[i] = ad::lift(from.data()[i], x);
+    };
+    up(narrow.R, out.R);
+    up(narrow.t, out.t);
+    up(narrow.ts, out.ts);
+    up(narrow.ws, out.ws);
+    if (!withRates) return;
+    up(narrow.velocity, out.velocity);
+    up(narrow.omega, out.omega);
+    up(narrow.accelBias, out.accelBias);
+    up(narrow.alphaBias, out.alphaBias);
+    out.springForce = ad::lift(narrow.springForce, x);
+  }
+}
+
+template <typename T>
+void KinematicCar::cornerMotionOn(int w, const T& travel, const T& travelRate, CornerMotionT<T>& out,
+                                  bool withRates) const {
   using V3 = Vec3T<T>;
   const Corner& C = corners_[w];
   CornerPoseT<T> local;

@@ -88,7 +88,7 @@ class KinematicCar final : public ClosedFormCar {
   };
   // A corner's pose and motion relative to the chassis at one evaluation
   // (chassis axes): its table at the travel and rack, the rates' share. T
-  // double, or ad::Dual (the Jacobian: the travel and its rate dual).
+  // double, or a Dual (the Jacobian: the travel and its rate dual).
   template <typename T>
   struct CornerMotionT {
     Mat3T<T> R;                    // carrier axes in chassis axes
@@ -100,8 +100,11 @@ class KinematicCar final : public ClosedFormCar {
   };
   using CornerMotion = CornerMotionT<double>;
   // withRates false: the pose and the partials alone (positions only).
+  // (T ad::Dual: cornerMotionOn on the corner's two directions, lifted.)
   template <typename T>
   void cornerMotion(int w, const T& travel, const T& travelRate, CornerMotionT<T>& m, bool withRates) const;
+  template <typename T>
+  void cornerMotionOn(int w, const T& travel, const T& travelRate, CornerMotionT<T>& m, bool withRates) const;
   // A corner's table at a travel and the step's rack travel, the angles'
   // sines and cosines and the pose from them.
   template <typename T>
