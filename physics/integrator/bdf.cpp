@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace bdfcar::integ {
 
@@ -58,6 +59,7 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   ws_.resize(n_);
   bindState(own_);
   for (auto& d : delta_) d.setZero(nv);
+  missScratch_.setZero(nv);
   dx_.resize(n_);
   Fa_.setZero(nv, nv);
   J_.setZero(nc, nv);
@@ -142,7 +144,7 @@ StepReport BdfIntegrator::step(double h) {
       hs *= 2;
     }
   } else {
-    rep = splitAhead(h, due, 0, carriedDepth(h));
+    rep = pieces(h, due);
   }
   if (rep.ok()) {
     ++st_->counters.steps;
@@ -184,27 +186,72 @@ StepReport BdfIntegrator::halves(double h, int depth, int failures) {
   return splitOnFailure(tEnd - node(0).t, false, depth + 1, failures);
 }
 
-// A step right after refined ones starts at twice their shortest piece, not
-// at h: on relief h would miss its predictor again, an attempt wasted. The
-// history's node times say how the last h was cut (so a run restored from
-// its state cuts the same way).
-int BdfIntegrator::carriedDepth(double h) const {
-  if (opt_.refineDepth <= 0 || !(opt_.refineError > 0) || !opt_.refreshWhenNotContracting) return 0;
-  if (st_->count > 1 && node(0).t - node(1).t >= h * (1 - 1e-9)) return 0;  // the last step was whole
-  double shortest = h;
-  for (int i = 0; i + 1 < st_->count && node(i + 1).t >= node(0).t - h * (1 + 1e-9); ++i)
-    shortest = std::min(shortest, node(i).t - node(i + 1).t);
-  int depth = 0;
-  while (depth < opt_.refineDepth && 2.0 * shortest < std::ldexp(h, -depth) * (1 - 1e-9)) ++depth;
-  return depth;
+bool BdfIntegrator::refining() const {
+  return opt_.refineDepth > 0 && opt_.refineError > 0 && opt_.refreshWhenNotContracting;
 }
 
-StepReport BdfIntegrator::splitAhead(double h, bool jacobianDue, int depth, int ahead) {
-  if (ahead == 0) return splitOnFailure(h, jacobianDue, depth, 0);
+// A step right after refined ones goes on in pieces as long as the last one
+// (on relief a whole h, or twice the piece, would miss its predictor again:
+// an attempt wasted, and the Newton iterations at a step too long for the
+// road); a piece doubles, on the doubled piece's grid of the step, where the
+// predictor's error model says the doubled one would pass. The history's
+// nodes say how the last step ended, so a run restored from its state cuts
+// the same way.
+StepReport BdfIntegrator::pieces(double h, bool jacobianDue) {
+  const int deepest = refining() && opt_.carryRefinedPieces ? opt_.refineDepth : 0;
+  int j = deepest > 0 ? nextDepth(h, deepest, 0) : 0;
+  if (j == 0) return splitOnFailure(h, jacobianDue, 0, 0);
   const double tEnd = node(0).t + h;
-  StepReport rep = splitAhead(0.5 * h, jacobianDue, depth + 1, ahead - 1);
-  if (!rep.ok()) return rep;
-  return splitOnFailure(tEnd - node(0).t, false, depth + 1, 0);
+  const long total = 1L << deepest;  // the step in pieces of the deepest refinement
+  StepReport rep;
+  for (long at = 0; at < total;) {
+    const long size = total >> j;
+    const double piece = at + size == total ? tEnd - node(0).t : std::ldexp(h, -j);  // the last lands on t + h
+    rep = splitOnFailure(piece, jacobianDue && at == 0, j, 0);
+    if (!rep.ok()) return rep;
+    at += size;
+    if (at < total) j = nextDepth(h, deepest, at);
+  }
+  return rep;
+}
+
+// The halvings of h the next piece takes, at `at` pieces of the deepest
+// refinement into the step: the last piece's (a split step's deepest piece
+// counts as the deepest refinement), one fewer where the doubled piece
+// starts on its own grid and the last piece's predictor miss times 2^(k+1)
+// (a miss of order k grows as h^(k+1)) is within refineError.
+int BdfIntegrator::nextDepth(double h, int deepest, long at) {
+  if (st_->count < 2) return 0;
+  const double last = node(0).t - node(1).t;
+  if (!(last < h * (1 - 1e-9))) return 0;  // the last step was whole
+  int j = 0;
+  while (j < deepest && std::ldexp(h, -j) > last * (1 + 1e-9)) ++j;
+  if (j == 0) return 0;
+  const long doubled = 2 * ((1L << deepest) >> j);
+  if (at % doubled != 0) return j;
+  const int k = std::min(opt_.order, st_->count - 1);  // the order the last piece was taken with
+  return std::ldexp(lastPieceMiss(k), k + 1) <= opt_.refineError ? j - 1 : j;
+}
+
+// The predictor's miss of node(0), from the history: the polynomial through
+// the np nodes before it, at its time, against it, in local coordinates
+// around node(1) (as substep judged it, to rounding); infinite where the
+// history is too short to have judged it.
+double BdfIntegrator::lastPieceMiss(int k) {
+  const int np = std::min(k + 1, st_->count - 1);
+  if (np < 2) return std::numeric_limits<double>::infinity();
+  std::array<double, kMaxBdfOrder + 2> times{}, w{};
+  for (int i = 0; i < np; ++i) times[i] = node(i + 1).t;
+  lagrangeWeights(times.data(), np, node(0).t, w.data());
+  for (int i = 1; i < np; ++i) dae_.localCoordinates(node(1).q, node(i + 1).q, delta_[i]);
+  dae_.localCoordinates(node(1).q, node(0).q, missScratch_);
+  double miss = 0;
+  for (int c = 0; c < n_.nv; ++c) {
+    double predicted = 0;
+    for (int i = 1; i < np; ++i) predicted += w[i] * delta_[i](c);
+    miss = std::max(miss, std::abs(missScratch_(c) - predicted));
+  }
+  return miss;
 }
 
 EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {

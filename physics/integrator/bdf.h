@@ -87,6 +87,12 @@ struct BdfOptions {
   // again anyway (on the rough road and the washboard an eighth of all
   // iterations). Off only to measure what it buys (RESULTS 4b).
   bool refineFromFirstIterate = true;
+  // A step after refined pieces goes on in pieces of the last one's length,
+  // doubled only where the last piece's miss times 2^(order+1) is within
+  // refineError (on relief a whole step would miss again: on the rough road
+  // nearly every step was refined, a first attempt wasted each time). Off
+  // (every step first tried whole) only to measure what it buys (RESULTS 4b).
+  bool carryRefinedPieces = true;
   StartUp startUp = StartUp::Auto;
   // Accumulate the Jacobian / residual / back-substitution split (the
   // report's section 5, the benchmarks). Off unless asked: its clock reads,
@@ -130,11 +136,13 @@ class BdfIntegrator final : public Integrator {
   // failed attempts (kMaxSplits bounds these, refineDepth the depth).
   StepReport splitOnFailure(double h, bool jacobianDue, int depth, int failures);
   StepReport halves(double h, int depth, int failures);
-  // How many halvings the next step of h starts with: after refined steps,
-  // its first piece is twice their shortest (carriedDepth); splitAhead takes
-  // the first `ahead` halves so, the rest by splitOnFailure.
-  int carriedDepth(double h) const;
-  StepReport splitAhead(double h, bool jacobianDue, int depth, int ahead);
+  bool refining() const;  // refineError and refineDepth in force
+  // The step of h in pieces: whole, or after refined steps in pieces of
+  // their last length, doubled where the last miss says a doubled one would
+  // pass (nextDepth, from the history: lastPieceMiss), each by splitOnFailure.
+  StepReport pieces(double h, bool jacobianDue);
+  int nextDepth(double h, int deepest, long at);
+  double lastPieceMiss(int order);
   EvalStatus evaluateJacobian(double t, Message& msg);
   // The iteration matrix for h' (its inverse): one kept for this h' since
   // the blocks were evaluated, brought to the fast columns of now by a
@@ -212,6 +220,7 @@ class BdfIntegrator final : public Integrator {
 
   // Step work vectors.
   std::array<Vec, kMaxBdfOrder + 2> delta_;  // local coordinates of past nodes around q_{n-1}
+  Vec missScratch_;                          // lastPieceMiss's node(0) around node(1)
   Vec xiQ_, xiV_;
   Vec dPred_, vPred_, aPred_, lamPred_;
   Vec d_, q_, v_, a_, lam_;                  // Newton iterate

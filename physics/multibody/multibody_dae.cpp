@@ -44,11 +44,11 @@ void MultibodyDae::evaluateKinematics(double t, const integ::Vec& q, const integ
 
 void MultibodyDae::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
   bool any = false;
-  for (ForceProvider* p : providers_) any |= p->needsBeginStep();
+  for (ForceProvider* p : providers_) any |= p->needsBeginStep(t);
   if (!any) return;
   updatePositions(model_, q, data_);
   for (ForceProvider* p : providers_)
-    if (p->needsBeginStep()) p->beginStep(model_, data_, t);
+    if (p->needsBeginStep(t)) p->beginStep(model_, data_, t);
 }
 
 // Force-law states, the next step's preparation and the divergence checks

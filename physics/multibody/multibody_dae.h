@@ -16,10 +16,11 @@ namespace bdfcar::mb {
 class ForceProvider {
  public:
   virtual ~ForceProvider() = default;
-  // Before a step, at the predicted state (positions in data are current),
-  // when needsBeginStep(): the first step of a run, or always for providers
-  // that cannot prepare the step from the accepted state.
-  virtual bool needsBeginStep() const { return false; }
+  // Before a step ending at t, at the predicted state (positions in data
+  // are current), when needsBeginStep(t): the first step of a run, a step
+  // other than the one the accepted state prepared for, or always for
+  // providers that cannot prepare the step from the accepted state.
+  virtual bool needsBeginStep(double /*t*/) const { return false; }
   virtual void beginStep(const Model& /*model*/, const Data& /*data*/, double /*t*/) {}
   // Adds wrenches to data.fext and joint forces to data.jointForce. Positions
   // and velocities in data are current.

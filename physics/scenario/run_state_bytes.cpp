@@ -160,6 +160,7 @@ void fields(IO& io, S& s) {
     io.field("driveline", *x);
   io.field("forces last accepted time", s.forces.lastAccepted);
   flag(io, "forces planes ready", s.forces.planesReady);
+  io.field("forces planes for", s.forces.planesFor);
   flag(io, "rack scripted", s.rack.scripted);
   for (auto* x : {&s.rack.t0, &s.rack.s0, &s.rack.r0, &s.rack.a}) io.field("rack segment", *x);
   io.field("speed controller integral", s.speedIntegral);

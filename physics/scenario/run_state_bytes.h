@@ -26,7 +26,7 @@ namespace bdfcar::scenario {
 // evaluation's tyre outputs left out (they are not state), the accepted
 // step's tyre force in. 5: the integrator's steps since its Jacobian left
 // out (the Jacobian's age, not state: a restored run evaluates a fresh one).
-inline constexpr std::uint32_t kRunStateFormat = 6;
+inline constexpr std::uint32_t kRunStateFormat = 7;
 
 class RunStateBytesError : public std::runtime_error {
  public:

@@ -51,7 +51,8 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
     << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
     << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
     << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << b.fastRowSolve << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
-    << ' ' << b.refineDepth << ' ' << b.refineFromFirstIterate << ' ' << b.keepFactorizations << ' '
+    << ' ' << b.refineDepth << ' ' << b.refineFromFirstIterate << ' ' << b.carryRefinedPieces << ' '
+    << b.keepFactorizations << ' '
     << scene.fidelity.planarClosedForm << ' ' << scene.fidelity.kinematicClosedForm << ' '
     << scene.fidelity.newtonIterations << ' ' << scene.fidelity.stopWithinTolerance;
   return k.str();

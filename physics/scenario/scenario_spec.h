@@ -164,8 +164,9 @@ struct ScenarioSpec {
   // path follower's decision): each tick runs tick / integrator.step steps.
   double tick = 0.01;          // s
   int raysPerWheel = 1;
-  // An enveloping tyre's ground at the wheel in every residual (false: held
-  // at the step's prediction, for comparison; vehicle_forces.h).
+  // An enveloping tyre's ground at the wheel in every residual, a point
+  // contact's at each step's own end (false: held at the accepted step's
+  // prediction, for comparison; vehicle_forces.h).
   bool groundInsideStep = true;
   FidelitySpec fidelity;
   IntegratorSpec integrator;

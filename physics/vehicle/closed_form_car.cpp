@@ -270,7 +270,7 @@ integ::EvalStatus ClosedFormCar::acceptWheels(double t, double h, const integ::V
   const double since = forces_.sinceAccepted(t);
   for (int w = 0; w < 4; ++w) forces_.acceptWheel(w, kinematics_[w], relativeSpin_[w], since, h);
   if (engineV() >= 0) forces_.acceptDriveline(v(engineV()), relativeSpin_, since);
-  forces_.markAccepted(t);
+  forces_.markAccepted(t, h);
   return integ::EvalStatus::Ok;
 }
 

@@ -269,7 +269,7 @@ void KinematicCar::cornerMotionOn(int w, const T& travel, const T& travelRate, C
 
 void KinematicCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();  // the rack's segment may have changed at a tick
-  if (!forces_.needsBeginStep()) return;
+  if (!forces_.needsBeginStep(t)) return;
   updateSteering(t);
   const Mat3 R0 = mb::quatToMatrix(q.data() + 3);
   const Vec3 p = q.head<3>();
@@ -280,7 +280,7 @@ void KinematicCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
     centres[w] = p + R0 * (cm.t + cm.R * corners_[w].centre);
     axes[w] = R0 * (cm.R * corners_[w].axisY);
   }
-  forces_.beginContacts(centres, axes);
+  forces_.beginContacts(t, centres, axes);
 }
 
 integ::EvalStatus KinematicCar::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,

@@ -246,7 +246,7 @@ void PlanarCar::updateSteering(double t) {
 
 void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
   steeringTime_ = std::numeric_limits<double>::quiet_NaN();  // the rack's segment may have changed at a tick
-  if (!forces_.needsBeginStep()) return;
+  if (!forces_.needsBeginStep(t)) return;
   updateSteering(t);
   const Heading<double> yaw = headingOf(q(Yaw));
   const Vec3 origin(q(X), q(Y), groundZ_);
@@ -255,7 +255,7 @@ void PlanarCar::beginStep(double t, const integ::Vec& q, const integ::Vec&) {
     centres[w] = origin + yaw.toWorld(wheels_[w].centre);
     axes[w] = yaw.toWorld(wheels_[w].axisY);
   }
-  forces_.beginContacts(centres, axes);
+  forces_.beginContacts(t, centres, axes);
 }
 
 integ::EvalStatus PlanarCar::acceptStep(double t, double h, const integ::Vec& q, const integ::Vec& v,

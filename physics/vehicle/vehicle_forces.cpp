@@ -36,6 +36,7 @@ VehicleForces::VehicleForces(const Vehicle& vehicle, const terrain::Terrain& ter
     if (envelopes_[w].on) spacing = std::min(spacing, envelopes_[w].spacing);
   }
   if (std::isfinite(spacing)) lattice_.emplace(terrain, spacing);
+  for (int w = 0; w < 4; ++w) pointContacts_ = pointContacts_ || (options_.groundInsideStep && !groundFollowsWheel(w));
 }
 
 void VehicleForces::reset(double t) {
@@ -289,7 +290,7 @@ tyre::TyreOutput VehicleForces::tyreAt(int w, const tyre::WheelKinematics& k, do
 
 double VehicleForces::spinIncrement(double spinRate) { return kFiniteDifferenceStep * std::max(1.0, std::abs(spinRate)); }
 
-void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
+void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double t) {
   // Positions only are current here.
   std::array<Eigen::Vector3d, 4> centres, axes;
   for (int w = 0; w < 4; ++w) {
@@ -297,13 +298,18 @@ void VehicleForces::beginStep(const mb::Model&, const mb::Data& d, double) {
     centres[w] = d.p[b];
     axes[w] = d.R[b].col(1);
   }
-  beginContacts(centres, axes);
+  beginContacts(t, centres, axes);
 }
 
-void VehicleForces::beginContacts(const std::array<Eigen::Vector3d, 4>& centres,
+void VehicleForces::beginContacts(double t, const std::array<Eigen::Vector3d, 4>& centres,
                                   const std::array<Eigen::Vector3d, 4>& spinAxes) {
-  for (int w = 0; w < 4; ++w) prepareGround(w, centres[w], spinAxes[w]);
+  // A run's first planes serve its first step wherever that ends (cast at
+  // its start or at its predicted end, as the model calls this).
+  const bool first = !state_->planesReady;
+  for (int w = 0; w < 4; ++w)
+    if (first || !groundFollowsWheel(w)) prepareGround(w, centres[w], spinAxes[w]);
   state_->planesReady = true;
+  state_->planesFor = first ? kAnyStep : t;
 }
 
 template <typename T>
@@ -549,7 +555,7 @@ void VehicleForces::acceptStep(const mb::Model&, const mb::Data& d, double t, do
     for (int w = 0; w < 4; ++w) spins[w] = relativeSpin(d, w);
     acceptDriveline(engineSpeed(d), spins, h);
   }
-  markAccepted(t);
+  markAccepted(t, hNext);
 }
 
 const tyre::TyreOutput& VehicleForces::evaluateTyre(int w, const tyre::WheelKinematics& k, double h,
@@ -594,9 +600,10 @@ void VehicleForces::acceptDriveline(double engine, const std::array<double, 4>& 
                                                      s.clutchDeflection, engine - s.command.ratio * drivenSpeed(spins), h);
 }
 
-void VehicleForces::markAccepted(double t) {
+void VehicleForces::markAccepted(double t, double hNext) {
   state_->lastAccepted = t;
   state_->planesReady = true;
+  state_->planesFor = t + hNext;
 }
 
 #define BDFCAR_FORCE_LAWS(T)                                                                                     \

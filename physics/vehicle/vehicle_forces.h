@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -49,9 +50,11 @@ namespace bdfcar::vehicle {
 struct TerrainContactOptions {
   int raysPerWheel = 1;          // 1: plane under the wheel centre; >1: envelope over the footprint
   double footprintHalfLength = 0.6;  // of the unloaded radius, for the extra rays
-  // An enveloping tyre's cams placed at the wheel in every residual (true),
-  // or held where the step's prediction put them (false: the frozen ground
-  // of the point contact, kept to show what it costs, tests/test_envelope.cpp).
+  // An enveloping tyre's cams placed at the wheel in every residual, and a
+  // point contact's plane cast again at the end of a step other than the
+  // one the accepted step prepared for (true); or both held where the
+  // accepted step's prediction put them (false: the frozen ground, kept to
+  // show what it costs, tests/test_envelope.cpp).
   bool groundInsideStep = true;
 };
 
@@ -94,7 +97,13 @@ class VehicleForces final : public mb::ForceProvider {
   void setDriveline(const DrivelineCommand& c) { state_->driveline.command = c; }
   const DrivelineState& driveline() const { return state_->driveline; }
 
-  bool needsBeginStep() const override { return !state_->planesReady; }
+  // The planes are cast at acceptance for a step as long as the accepted one;
+  // a step ending elsewhere (a refined step's halves, the pieces after them)
+  // casts its point contacts' again at its own predicted end (an enveloping
+  // tyre's ground follows the wheel inside the step: its profile stays).
+  bool needsBeginStep(double t) const override {
+    return !state_->planesReady || (pointContacts_ && t != state_->planesFor && state_->planesFor != kAnyStep);
+  }
   void beginStep(const mb::Model& model, const mb::Data& data, double t) override;
   void apply(const mb::Model& model, mb::Data& data, double t) override;
   void acceptStep(const mb::Model& model, const mb::Data& data, double t, double h) override;
@@ -111,9 +120,12 @@ class VehicleForces final : public mb::ForceProvider {
   // The force laws of one wheel from its kinematics alone, for a model that
   // is not an mb::Model (the closed-form planar car, planar_car.h); apply()
   // and acceptStep() go through the same functions.
-  // The contact planes under wheel centres at the start of a run (what
-  // beginStep casts from a multibody model's positions).
-  void beginContacts(const std::array<Eigen::Vector3d, 4>& centres, const std::array<Eigen::Vector3d, 4>& spinAxes);
+  // The contact planes under wheel centres at the predicted end t of a step
+  // (what beginStep casts from a multibody model's positions): every wheel's
+  // at the start of a run, the point contacts' for a step other than the one
+  // prepared at acceptance (needsBeginStep).
+  void beginContacts(double t, const std::array<Eigen::Vector3d, 4>& centres,
+                     const std::array<Eigen::Vector3d, 4>& spinAxes);
   // The tyre at k on the wheel's contact plane (outputs()[w] holds it after).
   const tyre::TyreOutput& evaluateTyre(int w, const tyre::WheelKinematics& k, double h, std::optional<double> load);
   // The brake's torque about the spin axis (+ with the spin) at a spin
@@ -130,7 +142,7 @@ class VehicleForces final : public mb::ForceProvider {
                  tyre::TyreOutputT<T>& out) const;
   // Advances wheel w's states over an accepted step of length h (transient
   // slips, brake spring, the accepted tyre force) and casts its next contact
-  // plane, hNext ahead; then markAccepted(t) once for the four.
+  // plane, hNext ahead; then markAccepted(t, hNext) once for the four.
   void acceptWheel(int w, const tyre::WheelKinematics& k, double relativeSpin, double h, double hNext);
   // Wheel w's tyre at kinematics k on the ground, slip state and load of
   // its latest evaluation, h after the last accepted step, nothing stored:
@@ -158,7 +170,7 @@ class VehicleForces final : public mb::ForceProvider {
   template <typename T>
   DrivelineTorquesT<T> drivelineAt(const T& engine, const std::array<T, 4>& spins, double h) const;
   const std::vector<int>& drivenWheels() const { return driven_; }
-  void markAccepted(double t);
+  void markAccepted(double t, double hNext = 0);
   double sinceAccepted(double t) const { return std::max(0.0, t - state_->lastAccepted); }
   // A planar model's load from its roll centres and pitch axis: the share of
   // each wheel's load the accepted tyre forces move (the base's forward and
@@ -184,6 +196,7 @@ class VehicleForces final : public mb::ForceProvider {
     DrivelineState driveline;
     double lastAccepted = 0;
     bool planesReady = false;
+    double planesFor = 0;  // the time of the step's end the planes were cast for (kAnyStep: a run's first)
     bool operator==(const State&) const = default;
   };
   const State& state() const { return *state_; }
@@ -192,6 +205,7 @@ class VehicleForces final : public mb::ForceProvider {
   // simulation owns); their own until then.
   void bindState(State& s) { state_ = &s; }
 
+  static constexpr double kAnyStep = -std::numeric_limits<double>::infinity();  // State::planesFor
   static constexpr double kBrakeStiffness = 1.0e5;  // N m/rad
   static constexpr double kBrakeDamping = 1.0e3;    // N m s/rad
 
@@ -258,6 +272,7 @@ class VehicleForces final : public mb::ForceProvider {
   TerrainContactOptions options_;
   std::array<tyre::Tyre, 4> tyres_;
   std::array<tyre::Envelope, 4> envelopes_;  // each tyre's cams (off: the point contact)
+  bool pointContacts_ = false;  // a wheel whose ground is the step's plane, cast again for another step's end
   std::array<tyre::ContactPlane, 4> insideStep_;  // an enveloping tyre's ground at its latest evaluation
   // The enveloping tyres' road, cast node by node (none without one: the
   // lattice's table is 0.6 MB).
