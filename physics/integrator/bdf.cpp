@@ -198,11 +198,12 @@ bool BdfIntegrator::refining() const {
 // nodes say how the last step ended, so a run restored from its state cuts
 // the same way.
 StepReport BdfIntegrator::pieces(double h, bool jacobianDue) {
-  const int deepest = refining() && opt_.carryRefinedPieces ? opt_.refineDepth : 0;
+  // The deepest piece a step can end in: refined, then split for failures.
+  const int deepest = refining() && opt_.carryRefinedPieces ? opt_.refineDepth + kMaxSplits : 0;
   int j = deepest > 0 ? nextDepth(h, deepest, 0) : 0;
   if (j == 0) return splitOnFailure(h, jacobianDue, 0, 0);
   const double tEnd = node(0).t + h;
-  const long total = 1L << deepest;  // the step in pieces of the deepest refinement
+  const long total = 1L << deepest;  // the step in pieces of the deepest
   StepReport rep;
   for (long at = 0; at < total;) {
     const long size = total >> j;
@@ -215,11 +216,13 @@ StepReport BdfIntegrator::pieces(double h, bool jacobianDue) {
   return rep;
 }
 
-// The halvings of h the next piece takes, at `at` pieces of the deepest
-// refinement into the step: the last piece's (a split step's deepest piece
-// counts as the deepest refinement), one fewer where the doubled piece
-// starts on its own grid and the last piece's predictor miss times 2^(k+1)
-// (a miss of order k grows as h^(k+1)) is within refineError.
+// The halvings of h the next piece takes, at `at` of the deepest pieces
+// into the step: the last piece's, one fewer where the doubled piece starts
+// on its own grid and the last piece's predictor miss times 2^(k+1) (a miss
+// of order k grows as h^(k+1)) is within refineError. So the pieces grow
+// back by doubling at most, after refinements and failure splits alike
+// (within BDF2's stable step ratio); those deeper than refineDepth are not
+// refined again (splitOnFailure).
 int BdfIntegrator::nextDepth(double h, int deepest, long at) {
   if (st_->count < 2) return 0;
   const double last = node(0).t - node(1).t;
