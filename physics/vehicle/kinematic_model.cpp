@@ -16,6 +16,7 @@
 #include "vehicle/linkage_sweep.h"
 #include "vehicle/mass_moments.h"
 #include "vehicle/motion_ratio.h"
+#include "physics_sources_hash.h"  // generated (physics/vehicle/CMakeLists.txt)
 #include "portable_math.h"
 
 namespace bdfcar::vehicle {
@@ -355,10 +356,14 @@ KinematicCheck checkAgainstLinkage(const Vehicle& link, LinkageSweep& ls, const 
 // The cache entry (derivation_cache.h): the sweep and the check's figures.
 constexpr std::uint32_t kCacheFormat = 1;
 
+// Keyed by the vehicle, the grid and the code that sweeps it (the physics
+// sources and the build flavour, cmake/source_fingerprint.cmake): an entry
+// that an older build or the other flavour wrote holds other last bits.
 std::uint64_t cacheKey(const Vehicle& linkage, const KinematicGrid& g) {
   ByteBuffer k;
   k.put(derivationFingerprint(linkage));
   k.put(kCacheFormat);
+  k.put(static_cast<std::uint64_t>(BDFCAR_PHYSICS_SOURCES_HASH));
   k.put(g.travelNodes);
   k.put(g.rackNodes);
   k.put(g.travel);
