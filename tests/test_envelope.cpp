@@ -281,10 +281,13 @@ TEST(Envelope, RefinedPiecesOfThePointContactCastTheirOwnPlanes) {
 }
 
 // The rough road lane change as its file runs it (10 ms, the default
-// policy), to 3 s (its first second of manoeuvre: the sine starts at 2 s).
+// policy), to 3 s (its first second of manoeuvre: the sine starts at 2 s),
+// on the point contact (the reference sedan's: the file's own tyres
+// envelop the road, which these tests of the step's pieces do not need).
 scenario::ScenarioSpec roughRoadFirstSecond() {
   scenario::ScenarioSpec spec = scenario::loadScenarioFile(std::string(BDFCAR_SOURCE_DIR) +
                                                            "/assets/scenarios/hard/rough_lane_change.toml");
+  spec.vehicleFile = std::string(BDFCAR_SOURCE_DIR) + "/assets/vehicles/sedan.toml";
   spec.duration = 3.0;
   return spec;
 }

@@ -55,7 +55,13 @@ template <typename T>
 T support(const Envelope& e, const T& m) {
   using std::abs;
   using std::pow;
-  if (e.c == 2.0) return ad::hypot(T(e.a * m), T(e.b));
+  // The square root of the sum of squares, not hypot (glibc's costs several
+  // times more, and camHeight takes one per segment under the cam): a m and
+  // b are slopes times tenths of a metre, far from overflow or underflow.
+  if (e.c == 2.0) {
+    const T x = e.a * m;
+    return ad::sqrt0(T(x * x + e.b * e.b));
+  }
   return pow(T(pow(T(abs(T(e.a * m))), e.dual) + std::pow(e.b, e.dual)), 1.0 / e.dual);
 }
 
