@@ -11,10 +11,16 @@ void HeightLattice::clear() {
   for (Slot& s : slots_) s.used = false;
 }
 
-const HeightLattice::Slot& HeightLattice::node(long long i, long long j, double zTop, double reach) const {
+// The hit inline, the miss (a ray) out of line: a profile's samples find
+// their four nodes cast nearly every time, where the call cost as much as the lookup.
+inline const HeightLattice::Slot& HeightLattice::node(long long i, long long j, double zTop, double reach) const {
   // Two's complement: & keeps non-negative indices for negative i, j.
   Slot& s = slots_[static_cast<std::size_t>((i & (kSide - 1)) * kSide + (j & (kSide - 1)))];
-  if (s.used && s.i == i && s.j == j) return s;
+  if (s.used && s.i == i && s.j == j) [[likely]] return s;
+  return cast(s, i, j, zTop, reach);
+}
+
+const HeightLattice::Slot& HeightLattice::cast(Slot& s, long long i, long long j, double zTop, double reach) const {
   const Hit h = terrain_.castRay(Eigen::Vector3d(i * spacing_, j * spacing_, zTop), -Eigen::Vector3d::UnitZ(), reach);
   ++rays_;
   s.i = i;

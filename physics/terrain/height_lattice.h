@@ -42,6 +42,7 @@ class HeightLattice {
   };
   static constexpr int kSide = 128;  // slots per side, direct-mapped: 6.4 m at 5 cm
   const Slot& node(long long i, long long j, double zTop, double reach) const;
+  const Slot& cast(Slot& s, long long i, long long j, double zTop, double reach) const;  // node's miss: its ray into s
 
   const Terrain& terrain_;
   double spacing_;
