@@ -125,14 +125,32 @@ T camHeight(const Envelope& e, const RoadProfile& p, const T& sT) {
     if (x < 0 || x > p.ds) return;
     best = ad::max(best, T(z0 + m * (sT - (p.s0 + k * p.ds)) + sup - e.b));
   };
+  // Outward from the centre, each side until what is left on it cannot
+  // win: no road under the cam is above the highest sample, and an item
+  // (a sample and the segment on its inner side) at distance d from the
+  // centre stands at most that plus the rise bound at d (a nanometre's
+  // margin for rounding, so that what is left out never ties). On relief of
+  // a few centimetres the cam's middle decides, and the rest is not read.
+  double top = RoadProfile::kNoGround;
+  for (int k = lo; k <= hi; ++k) top = std::max(top, p.z[k]);
+  constexpr double kMargin = 1e-9;
   sample(mid);
   if (mid + 1 <= hi) {
     sample(mid + 1);
     segment(mid);
   }
-  for (int k = lo; k <= hi; ++k) {
-    if (k != mid && k != mid + 1) sample(k);
-    if (k < hi && k != mid) segment(k);
+  // An item: a sample and the segment on its inner side, over
+  // [x_seg, x_seg + ds]; false (and nothing read) where it cannot win.
+  const auto item = [&](int at, int seg) {
+    const double x0 = p.s0 + seg * p.ds, d = std::max({0.0, x0 - s, s - (x0 + p.ds)});
+    if (top + contourRiseBound(e, d * inv) + kMargin <= ad::value(best)) return false;
+    sample(at);
+    segment(seg);
+    return true;
+  };
+  for (int left = mid - 1, right = mid + 2; left >= lo || right <= hi;) {
+    if (left >= lo) left = item(left, left) ? left - 1 : lo - 1;
+    if (right <= hi) right = item(right, right - 1) ? right + 1 : hi + 1;
   }
   return best;
 }
