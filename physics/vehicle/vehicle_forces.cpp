@@ -136,25 +136,29 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   p.heading = heading.squaredNorm() < 1e-6 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d(heading.normalized());
   p.origin = centre.head<2>();
   // Both cams' reach, and a margin for where the step ends up against its
-  // prediction (millimetres; a lattice node more is plenty); and as far again
-  // as the wheel moves in the predicted step, the way it moves (the next may
-  // be twice as long: a split step's halves grow back by doubling).
+  // prediction (millimetres; a lattice node more is plenty), around the
+  // wheel's whole path in the step on both sides of the predicted end: as
+  // far again as the wheel moves in the predicted step, ahead (the next
+  // may be twice as long: a split step's halves grow back by doubling) and
+  // behind (a step refined into halves, and the pieces after them, end
+  // short of the predicted end and keep this profile: at a 30 ms step, 80
+  // km/h, a quarter piece ended 0.5 m short, its cams off the profile).
   terrain::HeightLattice& lattice = *lattice_;
   const double half = 0.5 * e.base + e.a + 2.0 * lattice.spacing();
   const int halfCount = std::min(tyre::RoadProfile::kCapacity / 2 - 1,
                                  static_cast<int>(std::ceil(half / lattice.spacing())));
   p.ds = half / halfCount;
   const double along = travel.head<2>().dot(p.heading);
-  const int extra = std::min(tyre::RoadProfile::kCapacity - 2 * halfCount - 1,
+  const int extra = std::min((tyre::RoadProfile::kCapacity - 2 * halfCount - 1) / 2,
                              static_cast<int>(std::ceil(std::abs(along) / p.ds)));
   // Samples past n stay zero (a state restored from its bytes has them so).
-  const int n = 2 * halfCount + 1 + extra;
+  const int n = 2 * (halfCount + extra) + 1;
   if (n < p.n) {
     std::fill(p.z.begin() + n, p.z.begin() + p.n, 0.0);
     std::fill(p.cross.begin() + n, p.cross.begin() + p.n, 0.0);
   }
   p.n = n;
-  const int behind = along < 0 ? halfCount + extra : halfCount;  // samples before the origin's
+  const int behind = halfCount + extra;  // samples before the origin's
   p.s0 = -behind * p.ds;
   p.valid = false;
   const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
