@@ -23,6 +23,9 @@ std::vector<double> column(const std::vector<vehicle::VehicleSample>& s, const s
     else if (name == "y") out.push_back(x.com.y());
     else if (name == "height") out.push_back(x.chassisOrigin.z());  // the chassis frame, absolute
     else if (name == "FzFL") out.push_back(x.Fz[0]);
+    else if (name == "FzFR") out.push_back(x.Fz[1]);
+    else if (name == "FzRL") out.push_back(x.Fz[2]);
+    else if (name == "FzRR") out.push_back(x.Fz[3]);
     else throw std::logic_error("unknown column " + name);
   }
   if (name == "z" && !out.empty()) {

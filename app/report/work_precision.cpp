@@ -24,6 +24,30 @@ using scenario::IntegratorMethod;
 // (micro-radians a second) does not.
 constexpr double kTurnYawRate = 0.05;  // rad/s
 
+// A case loads its wheels (their loads' errors also as % of the swing) where
+// a wheel's converged load swings by this much (max - min) over the
+// manoeuvre: relief, braking, a turn do; a steady straight run does not.
+constexpr double kLoadSwing = 1000.0;  // N
+
+// The wheel loads' RMS difference to the converged run, as % of each
+// wheel's swing there, the largest of the four (negative where no wheel's
+// load swings by kLoadSwing): what relief and a straight run's vertical
+// dynamics are judged on, where yaw rate and lateral acceleration have no
+// peak to divide by.
+double wheelLoadError(const std::vector<vehicle::VehicleSample>& fine, const std::vector<vehicle::VehicleSample>& run) {
+  double worst = -1;
+  for (const char* c : {"FzFL", "FzFR", "FzRL", "FzRR"}) {
+    const std::vector<double> ref = column(fine, c);
+    if (ref.empty()) continue;
+    const auto [lo, hi] = std::minmax_element(ref.begin(), ref.end());
+    const double swing = *hi - *lo;
+    if (!(swing >= kLoadSwing)) continue;
+    const Difference d = compareAt(column(fine, "t"), ref, column(run, "t"), column(run, c));
+    worst = std::max(worst, 100.0 * d.rms / swing);
+  }
+  return worst;
+}
+
 // The shortest period of the scripted inputs (a square wave's, a sine's, a
 // chirp's at its fastest; infinity for none): a tick longer than half of it
 // samples the input below its Nyquist rate, so the run at that tick and the
@@ -276,7 +300,10 @@ void survivalSection(std::ostream& md) {
      << " rad/s or more; a straight run has no peak to divide by). Where the tick is longer than half the "
      << "shortest period of a scripted input, the input itself is aliased (the run and its converged twin "
      << "see different commands): the cell says so and gives no % (the case is then not one the step "
-     << "length can be judged on).\n\n"
+     << "length can be judged on). Then, where a wheel's converged load swings by "
+     << fmt("%g kN", kLoadSwing / 1e3) << " or more, *load*: the RMS difference of the wheel loads as % of "
+     << "each one's swing (max - min) in the converged run, the largest of the four (the vertical dynamics, "
+     << "which a straight run over relief is judged on).\n\n"
      << "| case | BDF2 10 ms | BDF2 20 ms | BDF2 40 ms | RK4 10 ms | Euler 10 ms |\n|---|---|---|---|---|---|\n";
   const std::vector<std::string> files = hardCaseFiles();
   struct Column {
@@ -290,6 +317,7 @@ void survivalSection(std::ostream& md) {
                                     {IntegratorMethod::SemiImplicitEuler, 0.01}};
   std::vector<int> survived(cols.size(), 0);
   std::vector<std::pair<double, std::string>> worst(cols.size(), {-1.0, ""});  // % of peak, case
+  std::vector<std::pair<double, std::string>> worstLoad(cols.size(), {-1.0, ""});  // % of swing, case
   for (const auto& f : files) {
     const scenario::ScenarioSpec base = scenario::loadScenarioFile(f);
     std::map<double, scenario::RunResult> fineAtTick;  // the converged run for each driver's tick
@@ -326,13 +354,18 @@ void survivalSection(std::ostream& md) {
         md << ", " << fmt("%.2g", yaw.rms) << " / " << fmt("%.2g", ay.rms);
         double peakYaw = 0;
         for (double x : column(fine.samples, "yawrate")) peakYaw = std::max(peakYaw, std::abs(x));
-        if (2 * spec.tick > shortestInputPeriod(spec)) {
+        const bool aliased = 2 * spec.tick > shortestInputPeriod(spec);
+        if (aliased) {
           md << " (input aliased: its period " << fmt("%g ms", 1e3 * shortestInputPeriod(spec)) << ", the tick "
              << fmt("%g ms", 1e3 * spec.tick) << ")";
         } else if (peakYaw >= kTurnYawRate) {
           const double percent = std::max(yaw.rmsPercent, ay.rmsPercent);
           md << " (" << fmt("%.2g", percent) << " %)";
           if (percent > worst[k].first) worst[k] = {percent, base.name};
+        }
+        if (const double load = aliased ? -1.0 : wheelLoadError(fine.samples, samples); load >= 0) {
+          md << "; load " << fmt("%.2g", load) << " %";
+          if (load > worstLoad[k].first) worstLoad[k] = {load, base.name};
         }
       }
     }
@@ -342,6 +375,8 @@ void survivalSection(std::ostream& md) {
   for (int n : survived) md << " " << n << " of " << files.size() << " |";
   md << "\n| **largest % of peak of a turning case that held** |";
   for (const auto& [percent, name] : worst) md << " " << (percent < 0 ? std::string("-") : fmt("%.2g %%", percent) + " (" + name + ")") << " |";
+  md << "\n| **largest load error of a case that held, % of swing** |";
+  for (const auto& [percent, name] : worstLoad) md << " " << (percent < 0 ? std::string("-") : fmt("%.2g %%", percent) + " (" + name + ")") << " |";
   md << "\n\nCommand: `bdfcar check --step 0.02 --tick 0.02` (and `--integrator rk4` / `euler` at 10 ms).\n\n";
 }
 
