@@ -25,8 +25,8 @@ std::string policyCells(const RunSummary& r) {
 
 void hardCasesSection(std::ostream& md, int repeats) {
   md << "## 4b. Hard cases: the default Newton policy against the paper's\n\n"
-     << "Each file of assets/scenarios/hard/ (sedan.toml, 10 ms, 2 Newton iterations, Jacobian every 200 steps, "
-     << "as the files say). *Default*: bdfcar's policy (when Newton stops contracting: the wheel-spin columns of "
+     << "Each file of assets/scenarios/hard/ (sedan.toml, on relief its enveloping tyres sedan_envelope.toml; "
+     << "10 ms, 2 Newton iterations, Jacobian every 200 steps; as the files say). *Default*: bdfcar's policy (when Newton stops contracting: the wheel-spin columns of "
      << "the Jacobian refreshed by a rank-4 update, Newton on to tolerance with them, then a split step; a step's "
      << "count ending at the first iteration within tolerance; "
      << "docs/DESIGN.md, integrator policy); *published*: the paper's fixed count alone (`--as-published`). "
