@@ -148,17 +148,24 @@ void VehicleForces::sampleProfile(int w, const Eigen::Vector3d& centre, const Ei
   const int halfCount = std::min(tyre::RoadProfile::kCapacity / 2 - 1,
                                  static_cast<int>(std::ceil(half / lattice.spacing())));
   p.ds = half / halfCount;
-  const double along = travel.head<2>().dot(p.heading);
-  const int extra = std::min((tyre::RoadProfile::kCapacity - 2 * halfCount - 1) / 2,
-                             static_cast<int>(std::ceil(std::abs(along) / p.ds)));
+  const double along = std::abs(travel.head<2>().dot(p.heading));
+  // Samples on each side of the origin's; where the path and the cams need
+  // more than the profile holds (a long step at speed, long cams on a fine
+  // lattice), fewer and further apart: the whole path stays covered.
+  constexpr int kMostPerSide = (tyre::RoadProfile::kCapacity - 1) / 2;
+  int perSide = halfCount + static_cast<int>(std::ceil(along / p.ds));
+  if (perSide > kMostPerSide) {
+    perSide = kMostPerSide;
+    p.ds = (half + along) / perSide;
+  }
   // Samples past n stay zero (a state restored from its bytes has them so).
-  const int n = 2 * (halfCount + extra) + 1;
+  const int n = 2 * perSide + 1;
   if (n < p.n) {
     std::fill(p.z.begin() + n, p.z.begin() + p.n, 0.0);
     std::fill(p.cross.begin() + n, p.cross.begin() + p.n, 0.0);
   }
   p.n = n;
-  const int behind = halfCount + extra;  // samples before the origin's
+  const int behind = perSide;  // samples before the origin's
   p.s0 = -behind * p.ds;
   p.valid = false;
   const double zTop = centre.z() + R0, reach = 2.0 * R0 + 0.5;
