@@ -82,6 +82,11 @@ BdfIntegrator::BdfIntegrator(Dae& dae, const BdfOptions& options)
   S_.setZero(m, m);
   slowFv_.setZero(nv, m);
   partsNow_.setZero(nv, m);
+  pending_.resize(n_);
+  pendingFa_.setZero(nv, nv);
+  pendingJ_.setZero(nc, nv);
+  pendingSlowFv_.setZero(nv, m);
+  pendingParts_.setZero(nv, m);
   sLu_ = Eigen::PartialPivLU<Mat>(m);
   w_.setZero(m);
   w2_.setZero(m);
@@ -119,6 +124,7 @@ void BdfIntegrator::initializeConsistent(const SolutionPoint& p) {
   st_->count = 1;
   node(0) = p;
   haveBlocks_ = false;
+  slice_ = -1;
   stepsSinceJacobian_ = 0;
   dropFactorizations();
 }
@@ -129,7 +135,11 @@ void BdfIntegrator::bindState(IntegratorState& s) {
 }
 
 StepReport BdfIntegrator::step(double h) {
-  const bool due = !haveBlocks_ || (opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery);
+  const bool periodic = haveBlocks_ && opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery;
+  // The periodic Jacobian in slices: one a step from here until it is whole.
+  if (periodic && slice_ < 0 && spreadsJacobian()) slice_ = 0;
+  sliceThisStep_ = periodic && slice_ >= 0;
+  const bool due = !haveBlocks_ || (periodic && !sliceThisStep_);
   const StartUp mode = opt_.startUp == StartUp::Auto ? (opt_.order >= 3 ? StartUp::Substeps : StartUp::OrderRamp)
                                                      : opt_.startUp;
   StepReport rep;
@@ -275,10 +285,64 @@ EvalStatus BdfIntegrator::evaluateJacobian(double t, Message& msg) {
     const std::vector<int>& fast = dae_.fastColumns();
     for (int k = 0; k < static_cast<int>(fast.size()); ++k) slowFv_.col(k) = dx_.Fv.col(fast[k]) - partsNow_.col(k);
   }
+  blocksEvaluated();
+  return EvalStatus::Ok;
+}
+
+void BdfIntegrator::blocksEvaluated() {
   ++st_->counters.jacobians;
   haveBlocks_ = true;
+  slice_ = -1;  // a whole Jacobian ends one in slices under way
   stepsSinceJacobian_ = 0;
   dropFactorizations();  // force a factorization with the new blocks
+}
+
+bool BdfIntegrator::spreadsJacobian() const {
+  // The closed forms' exact blocks (no constraints) cost a residual or two:
+  // whole. So is a Jacobian asked for every few steps (kSliceAge): a run
+  // that wants it fresh, where slices a few steps old would be most of its
+  // age (the default's is 200 steps).
+  constexpr int kSliceAge = 10;
+  return opt_.jacobianSlices > 1 && opt_.refreshWhenNotContracting && n_.nc > 0 &&
+         opt_.jacobianEvery >= kSliceAge * opt_.jacobianSlices;
+}
+
+EvalStatus BdfIntegrator::evaluateJacobianSlice(double t, Message& msg, bool& installed) {
+  ScopedTimer timer(opt_.timing, timers_.jacobian);
+  installed = false;
+  long& cnt = st_->counters.jacobianResiduals;
+  const int nv = n_.nv, slices = std::min(opt_.jacobianSlices, nv), k = slice_;
+  const int begin = nv * k / slices, end = nv * (k + 1) / slices;
+  // The fast columns of this slice with the force laws' part at its own
+  // point (their slow rest is a difference at one point).
+  const std::vector<int>& fast = dae_.fastColumns();
+  const bool parts = opt_.fastColumnRescue && dae_.hasFastColumnParts();
+  bool fastHere = false;
+  for (int c : fast) fastHere = fastHere || (c >= begin && c < end);
+  EvalStatus st = stateDerivativeColumns(dae_, t, q_, v_, a_, lam_, begin, end, pending_, ws_, cnt,
+                                         parts && fastHere ? &pendingParts_ : nullptr);
+  const bool last = k == slices - 1;
+  if (st == EvalStatus::Ok && last) st = massMatrixBlock(dae_, t, q_, v_, a_, lam_, pendingFa_, ws_, cnt);
+  if (st == EvalStatus::Ok && last) st = constraintJacobianBlock(dae_, t, q_, pendingJ_, ws_, cnt);
+  if (st != EvalStatus::Ok) {
+    msg = ws_.msg;
+    slice_ = -1;  // taken again, from its first slice, at the next step
+    return st;
+  }
+  if (parts && fastHere)
+    for (int j = 0; j < static_cast<int>(fast.size()); ++j)
+      if (fast[j] >= begin && fast[j] < end) pendingSlowFv_.col(j) = pending_.Fv.col(fast[j]) - pendingParts_.col(j);
+  if (!last) {
+    ++slice_;
+    return EvalStatus::Ok;
+  }
+  std::swap(dx_, pending_);
+  std::swap(Fa_, pendingFa_);
+  std::swap(J_, pendingJ_);
+  std::swap(slowFv_, pendingSlowFv_);
+  fastParts_ = parts;
+  blocksEvaluated();
+  installed = true;
   return EvalStatus::Ok;
 }
 
@@ -743,6 +807,19 @@ StepReport BdfIntegrator::substep(double h, bool jacobianDue, bool lastResort, b
     }
     fresh = true;
     rep.jacobianEvaluated = true;
+  } else if (sliceThisStep_) {
+    // A slice of the periodic Jacobian (the step's first piece takes it);
+    // once whole, its columns are from this and the last few steps: not
+    // fresh for the rescue (recover), which may want this step's own.
+    sliceThisStep_ = false;
+    bool installed = false;
+    if (const EvalStatus st = evaluateJacobianSlice(tNew, rep.message, installed); st != EvalStatus::Ok) {
+      rep.status = StepStatus::EvaluationFailed;
+      rep.recoverable = st == EvalStatus::Recoverable;
+      qAtPredictor_ = false;
+      return rep;
+    }
+    rep.jacobianEvaluated = installed;
   }
   // Refactor only for a real change of step or order.
   if (!sameHPrime(c.hPrime, factorizedHPrime_)) factorize(c.hPrime);

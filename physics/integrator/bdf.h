@@ -44,6 +44,19 @@ struct BdfOptions {
   double atol = 1e-6;             // Newton tolerance on the correction, absolute (m, rad)
   double rtol = 1e-6;             // ... relative to the motion over the step
   int jacobianEvery = 200;        // evaluate the Jacobian every N steps; 0 = first step only
+  // That periodic Jacobian taken in this many slices of its columns, one at
+  // the start of each of as many steps (at that step's predictor), used
+  // once the last is in: the step that refreshes it pays a slice's
+  // residuals, not the 2 nv + 1 of the whole (on the linkage 75, about a
+  // millisecond on relief: the longest step of a run, RESULTS 4b). The
+  // columns of a few steps apart are as good an iteration matrix as those
+  // of one step (it is 200 steps old when refreshed). With
+  // refreshWhenNotContracting only, where the DAE's blocks come by
+  // differences (constraints: the multibody models) and jacobianEvery is
+  // at least ten times the slices (a Jacobian asked for every few steps is
+  // asked for fresh); 1: whole, at one step (the paper's). A Jacobian
+  // Newton needs at once (none yet, a stalled step's rescue) is always whole.
+  int jacobianSlices = 4;
   // When the fixed count ends above tolerance and the last correction shrank
   // less than contractionLimit times: refresh a stale Jacobian and redo the
   // step, then (fresh Jacobian) iterate on to tolerance. Off = the paper's
@@ -117,7 +130,10 @@ class BdfIntegrator final : public Integrator {
   const Timers& timers() const override { return timers_; }
   void bindState(IntegratorState& s) override;
   const IntegratorState& state() const override { return *st_; }
-  void markJacobianStale() override { haveBlocks_ = false; }
+  void markJacobianStale() override {
+    haveBlocks_ = false;
+    slice_ = -1;  // a Jacobian in slices too: a run restored from its state has none
+  }
   void setNewtonEarlyEnd(bool on) override { opt_.stopWithinTolerance = on; }
   const BdfOptions& options() const { return opt_; }
 
@@ -144,6 +160,13 @@ class BdfIntegrator final : public Integrator {
   int nextDepth(double h, int deepest, long at);
   double lastPieceMiss(int order);
   EvalStatus evaluateJacobian(double t, Message& msg);
+  // The periodic Jacobian in slices (BdfOptions::jacobianSlices): whether
+  // it is taken so, the next slice at the iterate (the step's predictor),
+  // true in installed where it was the last (the blocks then in use).
+  bool spreadsJacobian() const;
+  EvalStatus evaluateJacobianSlice(double t, Message& msg, bool& installed);
+  // What a new set of blocks starts: the fast columns' slow rest, the counters, no factorization kept.
+  void blocksEvaluated();
   // The iteration matrix for h' (its inverse): one kept for this h' since
   // the blocks were evaluated, brought to the fast columns of now by a
   // low-rank update, or a new LU.
@@ -216,6 +239,12 @@ class BdfIntegrator final : public Integrator {
   // adds to the part at the iterate (partsNow_) in place of finite differences.
   bool fastParts_ = false;
   Mat slowFv_, partsNow_;
+  // A Jacobian in slices: the next slice (-1: none under way), whether this
+  // step's first piece takes it, the blocks so far (swapped in when whole).
+  int slice_ = -1;
+  bool sliceThisStep_ = false;
+  StateDerivatives pending_;
+  Mat pendingFa_, pendingJ_, pendingSlowFv_, pendingParts_;
   double firstCorrection_ = 0;  // the first correction norm of the last Newton attempt
 
   // Step work vectors.

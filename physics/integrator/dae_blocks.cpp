@@ -85,18 +85,15 @@ EvalStatus velocityColumn(Dae& dae, double t, const Vec& q, const Vec& v, const 
   out.phiDDotV.col(i) = (ws.r1.phiDDot - ws.r0.phiDDot) / h;
   return EvalStatus::Ok;
 }
-}  // namespace
 
-EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
-                                 StateDerivatives& out, BlockWorkspace& ws, long& count, Mat* fastParts) {
-  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
-  ++count;
-  if (st != EvalStatus::Ok) return st;
-  if (fastParts) dae.fastColumnParts(t, *fastParts);
-  if (constraintRows(out) == 0 && dae.stateJacobian(t, q, v, a, out.Fq, out.Fv)) return EvalStatus::Ok;
+// Columns [begin, end) of every block by forward differences from ws.r0,
+// the residual at (q, v, a, lambda).
+EvalStatus differenceColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                             int begin, int end, StateDerivatives& out, BlockWorkspace& ws, long& count) {
+  EvalStatus st = EvalStatus::Ok;
   ws.dq.setZero();
   ws.v = v;
-  for (int i = 0; i < v.size(); ++i) {
+  for (int i = begin; i < end; ++i) {
     ws.dq(i) = kFdStep;
     dae.retract(q, ws.dq, ws.q);
     ws.dq(i) = 0;
@@ -110,6 +107,27 @@ EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v,
     if (st != EvalStatus::Ok) return st;
   }
   return EvalStatus::Ok;
+}
+}  // namespace
+
+EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                                 StateDerivatives& out, BlockWorkspace& ws, long& count, Mat* fastParts) {
+  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
+  ++count;
+  if (st != EvalStatus::Ok) return st;
+  if (fastParts) dae.fastColumnParts(t, *fastParts);
+  if (constraintRows(out) == 0 && dae.stateJacobian(t, q, v, a, out.Fq, out.Fv)) return EvalStatus::Ok;
+  return differenceColumns(dae, t, q, v, a, lambda, 0, static_cast<int>(v.size()), out, ws, count);
+}
+
+EvalStatus stateDerivativeColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                                  int begin, int end, StateDerivatives& out, BlockWorkspace& ws, long& count,
+                                  Mat* fastParts) {
+  EvalStatus st = dae.residual(t, q, v, a, lambda, ws.r0, true, ws.msg);
+  ++count;
+  if (st != EvalStatus::Ok) return st;
+  if (fastParts) dae.fastColumnParts(t, *fastParts);
+  return differenceColumns(dae, t, q, v, a, lambda, begin, end, out, ws, count);
 }
 
 EvalStatus fastVelocityColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,

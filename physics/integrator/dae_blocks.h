@@ -34,6 +34,12 @@ struct StateDerivatives {
 EvalStatus stateDerivativeBlocks(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
                                  StateDerivatives& out, BlockWorkspace& ws, long& residualCount,
                                  Mat* fastParts = nullptr);
+// Columns [begin, end) of those blocks alone (of F_q, the constraint-level
+// terms and F_v: 2 (end - begin) + 1 residuals, always by differences), the
+// rest of `out` kept: a Jacobian taken in slices over several steps.
+EvalStatus stateDerivativeColumns(Dae& dae, double t, const Vec& q, const Vec& v, const Vec& a, const Vec& lambda,
+                                  int begin, int end, StateDerivatives& out, BlockWorkspace& ws, long& residualCount,
+                                  Mat* fastParts = nullptr);
 // The F_v (and g_v) columns of the DAE's fast coordinates alone
 // (Dae::fastColumns(): one residual per column, differenced against `base`,
 // the residual at the point), the rest of `out` kept.

@@ -376,6 +376,7 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     b.order = static_cast<int>(it->integerIn("order", 1, 5, b.order));
     b.newtonIterations = static_cast<int>(it->integerIn("newton_iterations", 0, 50, b.newtonIterations));  // 0: to tolerance
     b.jacobianEvery = static_cast<int>(it->integerIn("jacobian_every", 0, 1000000000, b.jacobianEvery));  // 0: first step only
+    b.jacobianSlices = static_cast<int>(it->integerIn("jacobian_slices", 1, 64, b.jacobianSlices));  // 1: whole at one step
     b.refreshWhenNotContracting = it->boolean("refresh_when_not_contracting", b.refreshWhenNotContracting);
     b.atol = it->number("atol", Dimension::None, kTolerance, b.atol);
     b.rtol = it->number("rtol", Dimension::None, Range{0.0, 1.0, false, false}, b.rtol);
