@@ -628,6 +628,12 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     if (chord && it == maxIt && it > 1 && it < opt_.maxNewtonIterations && norm > opt_.largeCorrection &&
         rep.contraction < opt_.contractionLimit)
       ++maxIt;
+    // Below the low-speed range: on past the count to a fraction of
+    // tolerance while contracting (BdfOptions::lowSpeedTolerance).
+    else if (lowSpeed_ && opt_.refreshWhenNotContracting && !toTolerance && opt_.lowSpeedTolerance > 0 &&
+             it == maxIt && it < opt_.maxNewtonIterations && norm > opt_.lowSpeedTolerance &&
+             (it == 1 || rep.contraction < 1.0))
+      ++maxIt;
   }
   if (toTolerance) {
     rep.message.set("Newton did not converge in %d iterations at t = %.6g s (correction %.3g)", maxIt, t,

@@ -139,6 +139,9 @@ class Integrator {
   // An implicit method's fixed Newton count ends early at an iteration within
   // tolerance (BdfOptions::stopWithinTolerance), from the next step on.
   virtual void setNewtonEarlyEnd(bool /*on*/) {}
+  // The vehicle is below its tyres' low-speed range (BdfOptions::
+  // lowSpeedTolerance), from the next step on.
+  virtual void setLowSpeed(bool /*on*/) {}
 };
 
 }  // namespace bdfcar::integ

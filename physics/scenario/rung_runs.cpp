@@ -49,7 +49,7 @@ std::string rungRunsKey(const ScenarioSpec& scene) {
   const integ::BdfOptions& b = i.bdf;
   k << '|' << static_cast<int>(i.method) << ' ' << i.step << ' ' << scene.tick << ' ' << b.order << ' '
     << b.newtonIterations << ' ' << b.maxNewtonIterations << ' ' << b.atol << ' ' << b.rtol << ' ' << b.jacobianEvery
-    << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' '
+    << ' ' << b.refreshWhenNotContracting << ' ' << b.contractionLimit << ' ' << b.largeCorrection << ' ' << b.lowSpeedTolerance << ' '
     << b.chordContinuation << ' ' << b.fastColumnRescue << ' ' << b.fastRowSolve << ' ' << static_cast<int>(b.startUp) << ' ' << b.refineError
     << ' ' << b.refineDepth << ' ' << b.refineFromFirstIterate << ' ' << b.carryRefinedPieces << ' '
     << b.keepFactorizations << ' '

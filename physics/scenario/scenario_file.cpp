@@ -383,6 +383,8 @@ ScenarioSpec loadScenarioFile(const std::string& path, const std::vector<config:
     b.refineError = it->number("refine_error", Dimension::None, Range{0.0, 1.0, false, false}, b.refineError);  // 0: off
     b.refineDepth = static_cast<int>(it->integerIn("refine_depth", 0, 6, b.refineDepth));
     b.fastRowSolve = it->boolean("fast_row_solve", b.fastRowSolve);
+    b.lowSpeedTolerance =
+        it->number("low_speed_tolerance", Dimension::None, Range{0.0, 1.0, false, false}, b.lowSpeedTolerance);  // 0: off
     it->finish();
   }
   // A CSV file's default columns are the telemetry's (a run's telemetry replays).

@@ -355,7 +355,9 @@ integ::StepReport Simulation::step() {
   // below it their transient slips make each contact a stiff, lightly damped
   // spring, on which the sub-tolerance error one iteration leaves would keep
   // a stopped car trembling (at micrometres a second) instead of settling.
-  integrator_->setNewtonEarlyEnd(spec().fidelity.stopWithinTolerance && std::abs(speed) >= lowSpeedRange(vehicle().spec));
+  const bool lowSpeed = std::abs(speed) < lowSpeedRange(vehicle().spec);
+  integrator_->setNewtonEarlyEnd(spec().fidelity.stopWithinTolerance && !lowSpeed);
+  integrator_->setLowSpeed(lowSpeed);
   integ::StepReport r = integrator_->step(h);
   if (!r.ok()) return r;
   bool grounded = false;
