@@ -172,13 +172,13 @@ TEST(Standstill, BrakingToAStopEndsAtRestWithoutJitter) {
 }
 
 TEST(Standstill, NoJitterWhateverTheJacobianTheCarStopsWith) {
-  // Newton on to a hundredth of tolerance below the low-speed range
-  // (integrator.low_speed_tolerance; not the default yet, DESIGN).
-  const double onToAHundredth = 0.01;
+  // The default: Newton on to a hundredth of tolerance below the low-speed
+  // range (integrator.low_speed_tolerance = 0.01, DESIGN).
+  const double defaultTolerance = integ::BdfOptions{}.lowSpeedTolerance;
   for (double speed : kBrakingSpeeds)
     for (int every : kJacobianEvery)
       for (int slices : kSlices) {
-        const AtRest r = brakeToAStop(speed, 0.8, every, slices, onToAHundredth);
+        const AtRest r = brakeToAStop(speed, 0.8, every, slices, defaultTolerance);
         EXPECT_LT(r.reversals, r.samples / 10) << r.reversals << " reversals in " << r.samples << " samples, from "
                                                << speed << " m/s, Jacobian every " << every << " in " << slices;
       }

@@ -73,9 +73,9 @@ struct BdfOptions {
   // just within tolerance leaves (about 1e-4 m/s on velocity) keeps a
   // stopped car trembling, with how much depending on the Jacobian it stops
   // with (tests/test_scenario.cpp, Standstill: 0.01 removes it in all of
-  // its 18 brakings). 0: off, the default until the report has measured
-  // what 0.01 moves (the hard cases that come to rest, RESULTS 4b, 5d).
-  double lowSpeedTolerance = 0.0;
+  // its 18 brakings). Only below the low-speed range, so a moving car's
+  // steps are the fixed count's as before (RESULTS 1-3 do not move). 0: off.
+  double lowSpeedTolerance = 0.01;
   // Parts of that policy, each on by default (off only to measure what it
   // buys, RESULTS 4b): chord iterations past the fixed count while an
   // impact's large correction still contracts; the rescue by the DAE's fast
