@@ -74,8 +74,9 @@ void hardCasesSection(std::ostream& md, int repeats) {
   }
   md << "\nWith the default policy the longest step of any hard case took " << fmt("%.0f", worstMax) << " us ("
      << worstMaxCase << ") and the costliest case averaged " << fmt("%.0f", worstMean) << " us per step ("
-     << worstMeanCase << "); the periodic Jacobian is taken in four slices, one at each of four steps "
-     << "(integrator.jacobian_slices: about 20 residuals each, not the 75 of the whole at one step, which set "
+     << worstMeanCase << "); the periodic Jacobian is taken in " << integ::BdfOptions{}.jacobianSlices
+     << " slices, one at each of as many steps (integrator.jacobian_slices: a slice's columns' two residuals each "
+     << "and one at its point, 5 to 7 on the sedan's linkage at sixteen, not the 75 of the whole at one step, which set "
      << "the longest step before; the published method still takes it whole). The published method is cheaper where Newton stalls because it does not converge "
      << "there: its distance to the converged run is the price.\n\n"
      << "What each measure of the policy bought, on the cases where Newton stalls most (median of " << repeats
@@ -107,7 +108,7 @@ void hardCasesSection(std::ostream& md, int repeats) {
       {"+ a step after refined pieces goes on in pieces of the last one's length, doubled where its miss says a "
        "doubled one passes",
        true, true, true, true, true, true, true, false},
-      {"+ the periodic Jacobian in four slices of its columns, one at each of four steps (the default)", true, true,
+      {"+ the periodic Jacobian in slices of its columns, one at each of as many steps (the default: sixteen)", true, true,
        true, true, true, true, true, true}};
   for (const char* file : {"rough_lane_change.toml", "washboard_60.toml", "ramp_jump.toml"}) {
     const scenario::ScenarioSpec base = scenario::loadScenarioFile(asset(std::string("scenarios/hard/") + file));

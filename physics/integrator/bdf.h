@@ -56,7 +56,7 @@ struct BdfOptions {
   // at least ten times the slices (a Jacobian asked for every few steps is
   // asked for fresh); 1: whole, at one step (the paper's). A Jacobian
   // Newton needs at once (none yet, a stalled step's rescue) is always whole.
-  int jacobianSlices = 4;
+  int jacobianSlices = 16;
   // When the fixed count ends above tolerance and the last correction shrank
   // less than contractionLimit times: refresh a stale Jacobian and redo the
   // step, then (fresh Jacobian) iterate on to tolerance. Off = the paper's
