@@ -253,6 +253,21 @@ bench_table() {
       printf "account for %d (%.0f %%); the rest, %d, is what an iteration on the relief costs more (the\n", iterations, 100 * iterations / extra, extra - iterations
       printf "envelope'"'"'s lattice and cams above, and the pieces'"'"' own factorizations and acceptances).\n" }'
     echo
+    # Where those iterations come from: the case with one thing of the
+    # policy or the road changed at a time (scripts/relief_study.sh).
+    echo "Where the relief's Newton iterations come from (\`bash scripts/relief_study.sh [SCENARIO] [T1] [T2]\`):"
+    echo "the case with the default policy and with one thing changed at a time, its Newton iterations per"
+    echo "10 ms over the window (a run to T2 less one to T1), its stalled steps (refreshed / rescued) and"
+    echo "refined ones, and its distance to the same case converged at 1 ms on the same road (the measure"
+    echo "of 5d). What to read in it: whether a fresh Jacobian or the ground held through the step buys"
+    echo "iterations (the Jacobian's age, the road followed inside Newton); what the refinement costs"
+    echo "against whole steps and against a fixed 5 ms step, and what it buys in distance; how the"
+    echo "iterations go with the road's amplitude, down to flat ground."
+    echo
+    bash "$root/scripts/relief_study.sh" "$root/assets/scenarios/hard/rough_lane_change.toml" 2 5 2> /dev/null
+    echo
+    bash "$root/scripts/relief_study.sh" "$root/assets/scenarios/hard/washboard_60.toml" 2 5 2> /dev/null
+    echo
     echo "The planar rung beside LFDM's 18-DOF model (a two-track model with roll, TMeasy tyres,"
     echo "half-implicit; uwsbel/low-fidelity-dynamic-models), a lane change at 80 km/h with a 10 ms step,"
     echo "in one run on this machine: \`bash scripts/lfdm_side_by_side.sh LFDM_SOURCE_DIR\` (LFDM_DIR for the"

@@ -454,11 +454,12 @@ std::optional<std::string> Simulation::offLevelGround() const {
   // The planar model has no heave, roll or pitch of its base: the ground
   // under every wheel must be its road plane, or the run stops saying so.
   const double road = vehicle().model.bodies[vehicle().layout.base].inParent.origin.z();
+  const double level = FidelityPolicy::roadNormalZ();
+  const auto& wheels = forces_->wheels();
   for (int w = 0; w < 4; ++w) {
-    const tyre::ContactPlane& g = forces_->wheels()[w].plane;
+    const tyre::ContactPlane& g = wheels[w].plane;
     const double rise = g.valid ? g.point.z() - road : NAN;
-    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= FidelityPolicy::roadNormalZ())
-      continue;
+    if (g.valid && std::abs(rise) <= FidelityPolicy::kRoadHeight && g.normal.z() >= level) continue;
     const double grade = g.valid ? pm::hypot(g.normal.x(), g.normal.y()) / std::max(1e-9, g.normal.z()) : 0.0;
     char buf[700];
     std::snprintf(buf, sizeof buf,
