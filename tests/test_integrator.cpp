@@ -242,6 +242,71 @@ TEST(Bdf, JacobianEvery200StepsOver400StepsGivesTwoJacobiansAndTwoFactorizations
   EXPECT_EQ(c.jacobianResiduals, 2 * (2 * 1 + 1));
 }
 
+namespace {
+
+// A mass on a spring of stiffness k + 3 k3 x^2 (Duffing's), no constraints
+// (as a closed-form rung): linear for k3 = 0, where the iteration matrix
+// never changes and Newton's correction after the first is roundoff.
+class DuffingOscillator final : public integ::Dae {
+ public:
+  explicit DuffingOscillator(double k3) : k3_(k3) {}
+  integ::DaeSizes sizes() const override { return {1, 1, 0}; }
+  void retract(const Vec& q, const Vec& dq, Vec& out) const override { out = q + dq; }
+  void localCoordinates(const Vec& base, const Vec& q, Vec& out) const override { out = q - base; }
+  void localRate(const Vec&, const Vec& v, Vec& out) const override { out = v; }
+  integ::EvalStatus residual(double, const Vec& q, const Vec& v, const Vec& a, const Vec&, integ::Residual& out,
+                             bool, integ::Message&) override {
+    out.F(0) = a(0) + 0.5 * v(0) + 1000.0 * q(0) + k3_ * q(0) * q(0) * q(0);
+    return integ::EvalStatus::Ok;
+  }
+
+ private:
+  double k3_;
+};
+
+struct PolicyRun {
+  integ::Counters counters;
+  double x = 0;  // at the end
+};
+
+PolicyRun runDuffing(double k3, bool refreshWhenNotContracting, int jacobianEvery) {
+  DuffingOscillator dae(k3);
+  integ::BdfOptions o;
+  o.newtonIterations = 2;  // in full: every step measures Newton's contraction
+  o.jacobianEvery = jacobianEvery;
+  o.refreshWhenNotContracting = refreshWhenNotContracting;
+  integ::BdfIntegrator bdf(dae, o);
+  Vec q(1), v(1);
+  q << 1.0;
+  v << 0.0;
+  integ::Message msg;
+  EXPECT_EQ(bdf.initialize(0, q, v, msg), integ::EvalStatus::Ok);
+  for (int i = 0; i < 400; ++i) EXPECT_TRUE(bdf.step(0.01).ok());
+  return {bdf.counters(), bdf.current().q(0)};
+}
+
+}  // namespace
+
+TEST(Bdf, WithoutConstraintsThePeriodicJacobianWaitsForNewtonToSayItIsStale) {
+  // Linear: the blocks of the first step are those of every step, so the
+  // periodic Jacobian (every 20 steps) is never due, and the run is the
+  // one with a Jacobian at every step (Newton's second correction is
+  // roundoff); the paper's policy (no refresh on a slow contraction) takes
+  // it at every 20th step.
+  const PolicyRun linear = runDuffing(0.0, true, 20), fresh = runDuffing(0.0, true, 1);
+  EXPECT_EQ(linear.counters.jacobians, 1);
+  EXPECT_EQ(fresh.counters.jacobians, 400);
+  EXPECT_NEAR(linear.x, fresh.x, 1e-12);
+  EXPECT_EQ(runDuffing(0.0, false, 20).counters.jacobians, 20);
+  // Hardening from 1000 to 10,000 N/m over the swing: a Jacobian taken at
+  // one end of it is stale at the other, Newton says so (it contracts
+  // linearly), and the periodic one is taken again; never retaken, the
+  // same run needs more iterations.
+  const PolicyRun hard = runDuffing(3000.0, true, 20), never = runDuffing(3000.0, true, 0);
+  EXPECT_GT(hard.counters.jacobians - hard.counters.rescues - hard.counters.refreshes, 1);
+  EXPECT_LT(hard.counters.newtonIterations, never.counters.newtonIterations);
+}
+
 TEST(Bdf, OrderTwoStartsAtOrderOneAndRefactorsOnceForTheNewStepCoefficient) {
   PendulumRun p;
   integ::BdfOptions o;

@@ -135,7 +135,8 @@ void BdfIntegrator::bindState(IntegratorState& s) {
 }
 
 StepReport BdfIntegrator::step(double h) {
-  const bool periodic = haveBlocks_ && opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery;
+  const bool periodic = haveBlocks_ && opt_.jacobianEvery > 0 && stepsSinceJacobian_ >= opt_.jacobianEvery &&
+                        !(skipsFreshJacobian() && worstContraction_ < kStaleContraction);
   // The periodic Jacobian in slices: one a step from here until it is whole.
   if (periodic && slice_ < 0 && spreadsJacobian()) slice_ = 0;
   sliceThisStep_ = periodic && slice_ >= 0;
@@ -294,17 +295,32 @@ void BdfIntegrator::blocksEvaluated() {
   haveBlocks_ = true;
   slice_ = -1;  // a whole Jacobian ends one in slices under way
   stepsSinceJacobian_ = 0;
+  worstContraction_ = 0;
   dropFactorizations();  // force a factorization with the new blocks
+}
+
+bool BdfIntegrator::skipsFreshJacobian() const {
+  // Without constraints (the closed forms, whose blocks are exact: dual
+  // numbers) a Newton that has contracted fast since the blocks were taken
+  // says they are still good: the periodic refresh waits for a contraction
+  // slower than kStaleContraction (a stale Jacobian contracts linearly, at
+  // the rate of its error; a good one's second correction is a few per cent
+  // of its first). A rung on steps Newton takes in a residual or two then
+  // pays for no Jacobian it does not use. The multibody models (blocks by
+  // differences, in slices) keep the paper's every jacobianEvery steps, and
+  // so does a run without refreshWhenNotContracting, the refresh a stale
+  // Jacobian falls back on. A Jacobian asked for every few steps
+  // (kAskedFresh) is one a run wants fresh: taken as asked.
+  return n_.nc == 0 && opt_.refreshWhenNotContracting && opt_.jacobianEvery > kAskedFresh;
 }
 
 bool BdfIntegrator::spreadsJacobian() const {
   // The closed forms' exact blocks (no constraints) cost a residual or two:
-  // whole. So is a Jacobian asked for every few steps (kSliceAge): a run
+  // whole. So is a Jacobian asked for every few steps (kAskedFresh): a run
   // that wants it fresh, where slices a few steps old would be most of its
   // age (the default's is 200 steps).
-  constexpr int kSliceAge = 10;
   return opt_.jacobianSlices > 1 && opt_.refreshWhenNotContracting && n_.nc > 0 &&
-         opt_.jacobianEvery >= kSliceAge * opt_.jacobianSlices;
+         opt_.jacobianEvery >= kAskedFresh * opt_.jacobianSlices;
 }
 
 EvalStatus BdfIntegrator::evaluateJacobianSlice(double t, Message& msg, bool& installed) {
@@ -598,6 +614,7 @@ BdfIntegrator::NewtonOutcome BdfIntegrator::newton(double t, const BdfCoefficien
     rep.iterations += 1;
     rep.correction = norm;
     rep.contraction = it > 1 ? norm / prevNorm : 0.0;
+    worstContraction_ = std::max(worstContraction_, rep.contraction);
     if (!std::isfinite(norm) || !(nonFinite == 0)) {
       rep.status = StepStatus::Diverged;
       rep.message.set("non-finite Newton correction at t = %.6g s (iteration %d)", t, it);

@@ -44,6 +44,9 @@ struct BdfOptions {
   double atol = 1e-6;             // Newton tolerance on the correction, absolute (m, rad)
   double rtol = 1e-6;             // ... relative to the motion over the step
   int jacobianEvery = 200;        // evaluate the Jacobian every N steps; 0 = first step only
+  // (without constraints, with refreshWhenNotContracting and N over 10:
+  // every N steps once Newton has contracted slower than kStaleContraction
+  // since the last; skipsFreshJacobian)
   // That periodic Jacobian taken in this many slices of its columns, one at
   // the start of each of as many steps (at that step's predictor), used
   // once the last is in: the step that refreshes it pays a slice's
@@ -175,6 +178,7 @@ class BdfIntegrator final : public Integrator {
   // it is taken so, the next slice at the iterate (the step's predictor),
   // true in installed where it was the last (the blocks then in use).
   bool spreadsJacobian() const;
+  bool skipsFreshJacobian() const;  // the periodic Jacobian waits for a slow contraction
   EvalStatus evaluateJacobianSlice(double t, Message& msg, bool& installed);
   // What a new set of blocks starts: the fast columns' slow rest, the counters, no factorization kept.
   void blocksEvaluated();
@@ -222,6 +226,13 @@ class BdfIntegrator final : public Integrator {
   bool haveBlocks_ = false;
   bool lowSpeed_ = false;  // setLowSpeed: set by the caller before each step
   long stepsSinceJacobian_ = 0;
+  double worstContraction_ = 0;  // Newton's slowest contraction since the blocks were taken
+  // Between the two populations (DESIGN): exact blocks contracted by 0.10
+  // at most (the sedan's J-turn, lane change), stale ones by 0.3 or more at
+  // most slow steps; half the contraction at which a step stops as not
+  // contracting (BdfOptions::contractionLimit).
+  static constexpr double kStaleContraction = 0.25;
+  static constexpr int kAskedFresh = 10;  // a Jacobian asked for every this many steps or fewer is asked fresh
   double factorizedHPrime_ = 0;
   StateDerivatives dx_;    // F_q, F_v and the constraint-level derivatives
   Mat Fa_, J_;             // (nv x nv), (nc x nv)
