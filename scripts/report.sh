@@ -196,7 +196,7 @@ bench_table() {
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
     echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
     echo "equations (PlanarCar::equations: about 1.2 residuals a step, Newton ending at the first iteration"
-    echo "within tolerance; their [dual] instance, the exact Jacobian every 200 steps, is amortised), the"
+    echo "within tolerance; their [dual] instance, the exact Jacobian, taken once here: Newton never found it stale), the"
     echo "tyres, the BDF step's own work (substep, newton, the kernels of bdf_kernels.h) and the step's"
     echo "acceptance (each wheel's ground for the next step, its slip state). No function holds a quarter"
     echo "of the step: the 6k target asks for every part halved, not one removed."
