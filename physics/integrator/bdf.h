@@ -228,7 +228,7 @@ class BdfIntegrator final : public Integrator {
   long stepsSinceJacobian_ = 0;
   double worstContraction_ = 0;  // Newton's slowest contraction since the blocks were taken
   // Between the two populations (DESIGN): exact blocks contracted by 0.10
-  // at most (the sedan's J-turn, lane change), stale ones by 0.3 or more at
+  // at most (the sedan's J-turn, either rung), stale ones by 0.3 or more at
   // most slow steps; half the contraction at which a step stops as not
   // contracting (BdfOptions::contractionLimit).
   static constexpr double kStaleContraction = 0.25;
