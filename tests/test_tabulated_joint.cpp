@@ -15,6 +15,7 @@
 #include "multibody/multibody_dae.h"
 #include "multibody/model_error.h"
 #include "multibody/spline_grid.h"
+#include "autodiff.h"
 
 namespace bdfcar::mb {
 namespace {
@@ -104,6 +105,44 @@ TEST(SplineGrid, RowCachedEvaluationIsTheDirectOne) {
     }
   }
   EXPECT_GT(hits, 100);  // evaluations where x stayed in the cached cell at the same y
+}
+
+TEST(SplineGrid, CachedCellOfOneCoordinateIsTheDirectSpline) {
+  // One coordinate (a rear corner's table over its travel): the cell's
+  // cubics kept in the cache against the direct Hermite evaluation, across
+  // cells and beyond the grid, the Dual's derivative too.
+  const GridAxis ax{-0.1, 0.01, 21};
+  std::vector<std::vector<double>> samples(2, std::vector<double>(ax.nodes));
+  for (int i = 0; i < ax.nodes; ++i) {
+    const double x = ax.start + i * ax.step;
+    samples[0][i] = std::sin(20 * x) + x * x;
+    samples[1][i] = std::exp(3 * x);
+  }
+  const SplineGrid g(ax, GridAxis{0, 1, 1}, samples);
+  SplineGrid::RowCache cache;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> ux(-0.13, 0.13);
+  for (int n = 0; n < 300; ++n) {
+    const double x = n % 4 == 0 ? ux(rng) : 0.0123 + 1e-3 * ux(rng);
+    SplineGrid::Sample direct, cached;
+    g.eval(x, 0.0, direct);
+    g.eval(x, 0.0, cache, cached);
+    EXPECT_EQ(direct.outside, cached.outside);
+    for (int c = 0; c < 2; ++c) {
+      EXPECT_NEAR(cached.f[c], direct.f[c], 1e-13 * (1 + std::abs(direct.f[c]))) << x;
+      EXPECT_NEAR(cached.grad[c][0], direct.grad[c][0], 1e-11 * (1 + std::abs(direct.grad[c][0]))) << x;
+      EXPECT_NEAR(cached.hess[c][0], direct.hess[c][0], 1e-9 * (1 + std::abs(direct.hess[c][0]))) << x;
+      EXPECT_EQ(cached.grad[c][1], 0.0);
+      EXPECT_EQ(cached.hess[c][2], 0.0);
+    }
+    // The Dual along x: its derivative is the value's slope.
+    SplineGrid::SampleT<ad::DualN<2>> dual;
+    g.eval(ad::seeded<2>(x, 0), 0.0, cache, dual);
+    for (int c = 0; c < 2; ++c) {
+      EXPECT_NEAR(dual.f[c].der[0], direct.grad[c][0], 1e-11 * (1 + std::abs(direct.grad[c][0]))) << x;
+      EXPECT_NEAR(dual.grad[c][0].der[0], direct.outside ? 0.0 : direct.hess[c][0], 1e-9 * (1 + std::abs(direct.hess[c][0])));
+    }
+  }
 }
 
 TEST(SplineGrid, CurveEvaluationIsTheOneCoordinateSpline) {

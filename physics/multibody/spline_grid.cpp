@@ -190,44 +190,81 @@ void SplineGrid::evalCurve(const CurvePoint& at, Curve& out) const {
   out.outside = at.outside;
 }
 
+// The cubic along x of a cell from its end values P0, P1 and x-slopes Q0, Q1
+// (Hermite data): value c0 + c1 u + c2 u^2 + c3 u^3 over u = (x - x_i) / h,
+// with its x-slope's and curvature's coefficients (what eval's weights sum).
+void SplineGrid::RowCache::setCubic(double* c, double P0, double Q0, double P1, double Q1, double h, bool derivatives) {
+  const double c1 = h * Q0, c2 = 3 * (P1 - P0) - h * (2 * Q0 + Q1), c3 = 2 * (P0 - P1) + h * (Q0 + Q1);
+  c[0] = P0;
+  c[1] = c1;
+  c[2] = c2;
+  c[3] = c3;
+  if (!derivatives) return;
+  c[4] = c1 / h;
+  c[5] = 2 * c2 / h;
+  c[6] = 3 * c3 / h;
+  c[7] = 2 * c2 / (h * h);
+  c[8] = 6 * c3 / (h * h);
+}
+
 template <typename T>
 void SplineGrid::eval(const T& x, double y, RowCache& cache, SampleT<T>& out) const {
-  if (y_.nodes == 1) {
-    eval(x, y, out);
-    return;
-  }
   T ux, ex;
   bool outX;
   const int i = locate(x_, x, ux, ex, outX);
+  const bool twoD = y_.nodes > 1;
   if (i != cache.i || y != cache.y || cache.j < 0) {
-    double uy;
-    const int j = locate(y_, y, uy, cache.ey, cache.outY);
+    // The cell's nodes contracted along y (value and x-slope at each x
+    // node, per order of the y derivative), then as cubics along x.
+    std::array<std::array<double, 2>, 3> P0{}, P1{};  // [k] = {value, x-slope} at nodes i, i + 1
+    double uy = 0;
+    int j = 0;
+    cache.ey = 0;
+    cache.outY = false;
+    if (twoD) j = locate(y_, y, uy, cache.ey, cache.outY);
     const HermiteWeights<double> wy = hermite(uy, y_.step);
     const std::array<double, 4>* wk[3] = {&wy.w0, &wy.w1, &wy.w2};
-    for (int c = 0; c < components_; ++c)
+    for (int c = 0; c < components_; ++c) {
       for (int a = 0; a < 2; ++a) {
+        std::array<std::array<double, 2>, 3>& P = a == 0 ? P0 : P1;
         const double* n0 = node(c, (i + a) + x_.nodes * j);
+        if (!twoD) {
+          P[0] = {n0[0], n0[1]};
+          continue;
+        }
         const double* n1 = node(c, (i + a) + x_.nodes * (j + 1));
         for (int k = 0; k < 3; ++k) {
           const std::array<double, 4>& w = *wk[k];  // node j: w[0] value, w[1] slope; node j + 1: w[2], w[3]
-          cache.values[c][6 * a + 2 * k] = w[0] * n0[0] + w[1] * n0[2] + w[2] * n1[0] + w[3] * n1[2];
-          cache.values[c][6 * a + 2 * k + 1] = w[0] * n0[1] + w[1] * n0[3] + w[2] * n1[1] + w[3] * n1[3];
+          P[k] = {w[0] * n0[0] + w[1] * n0[2] + w[2] * n1[0] + w[3] * n1[2],
+                  w[0] * n0[1] + w[1] * n0[3] + w[2] * n1[1] + w[3] * n1[3]};
         }
       }
+      double* cc = cache.cubics[c].data();
+      RowCache::setCubic(cc, P0[0][0], P0[0][1], P1[0][0], P1[0][1], x_.step, true);
+      if (!twoD) continue;
+      RowCache::setCubic(cc + 9, P0[1][0], P0[1][1], P1[1][0], P1[1][1], x_.step, true);
+      RowCache::setCubic(cc + 16, P0[2][0], P0[2][1], P1[2][0], P1[2][1], x_.step, false);
+    }
     cache.y = y;
     cache.i = i;
     cache.j = j;
   }
-  const HermiteWeights<T> wx = hermite(ux, x_.step);
+  const T& u = ux;
   const double ey = cache.ey;
   for (int c = 0; c < components_; ++c) {
-    const std::array<double, 12>& v = cache.values[c];
-    // Along x over the y-contracted node values (P: value, Q: x-slope) of y order k.
-    auto along = [&](const std::array<T, 4>& w, int k) -> T {
-      return w[0] * v[2 * k] + w[1] * v[2 * k + 1] + w[2] * v[6 + 2 * k] + w[3] * v[6 + 2 * k + 1];
-    };
-    const T g = along(wx.w0, 0), gx = along(wx.w1, 0), gy = along(wx.w0, 1);
-    const T gxx = along(wx.w2, 0), gxy = along(wx.w1, 1), gyy = along(wx.w0, 2);
+    const double* v = cache.cubics[c].data();
+    const T g = v[0] + u * (v[1] + u * (v[2] + u * v[3]));
+    const T gx = v[4] + u * (v[5] + u * v[6]);
+    const T gxx = v[7] + u * v[8];
+    if (!twoD) {
+      out.f[c] = g + ex * gx;
+      out.grad[c] = {gx, T(0.0)};
+      out.hess[c] = {outX ? T(0.0) : gxx, T(0.0), T(0.0)};
+      continue;
+    }
+    const T gy = v[9] + u * (v[10] + u * (v[11] + u * v[12]));
+    const T gxy = v[13] + u * (v[14] + u * v[15]);
+    const T gyy = v[16] + u * (v[17] + u * (v[18] + u * v[19]));
     out.f[c] = g + ex * gx + ey * gy + ex * ey * gxy;
     out.grad[c] = {T(gx + ey * gxy), T(gy + ex * gxy)};
     out.hess[c] = {outX ? T(0.0) : gxx, gxy, cache.outY ? T(0.0) : gyy};

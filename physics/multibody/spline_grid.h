@@ -74,18 +74,22 @@ class SplineGrid {
   bool sameAxisX(const SplineGrid& o) const { return x_.start == o.x_.start && x_.step == o.x_.step && x_.nodes == o.x_.nodes; }
 
   // The same for many x at one y (a closed-form car's table over travel
-  // and rack at one step's rack travel): the cell's nodes contracted along
-  // y once and kept in the cache while x stays in that cell and y is the
-  // same; each evaluation is then a spline along x. Equal to eval up to
-  // rounding (the sums are taken in another order).
+  // and rack at one step's rack travel, or over travel alone): the cell's
+  // nodes contracted along y once, and each component's cubics along x in
+  // that cell kept in the cache while x stays in the cell and y is the
+  // same; each evaluation is then a few polynomials in x. Equal to eval up
+  // to rounding (the sums are taken in another order).
   struct RowCache {
     double y = 0;
     int i = -1, j = -1;              // the cell contracted (-1: none)
     double ey = 0;                   // y beyond the grid
     bool outY = false;
-    // Per component, per x node of the cell (a = 0, 1), per order of the y
-    // derivative (0, 1, 2): the y-contracted value and x-slope.
-    std::array<std::array<double, 12>, kMaxComponents> values{};
+    // Per component, along x over the cell's local coordinate u: the cubic
+    // of the value (4 coefficients) with those of its x-slope (3) and
+    // curvature (2); of the y-slope (4) with its x-slope's (3); of the
+    // y-curvature (4).
+    std::array<std::array<double, 20>, kMaxComponents> cubics{};
+    static void setCubic(double* c, double P0, double Q0, double P1, double Q1, double h, bool derivatives);
   };
   template <typename T>
   void eval(const T& x, double y, RowCache& cache, SampleT<T>& out) const;

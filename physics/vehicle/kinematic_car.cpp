@@ -227,34 +227,37 @@ void KinematicCar::cornerMotionOn(int w, const T& travel, const T& travelRate, C
   out.ws.noalias() = out.R * w0;
   if (!withRates) return;
   const Mat3T<T>& E = P.E;
-  const int nv = C.steered ? 2 : 1;
   const T rates[2] = {travelRate, T(C.steered ? rackNow_.rate : 0.0)};
   // dE/dphi has one non-zero column (the first), dE/dtheta two (the first two).
   const T &fs = P.phiS, &fc = P.phiC, &ts = P.thetaS, &tc = P.thetaC;
   const V3 Ephi0(ts * fs, fc, -tc * fs), Etheta0(-tc * fc, T(0.0), -ts * fc), Etheta1(-ts, T(0.0), tc);
+  // The angles' rates adot = sum_k r_k da/ds_k, and the table's second
+  // derivatives along the rates, sum_kl r_k r_l d2/ds_k ds_l: the
+  // accelerations' bias terms are bilinear in the rates, so both sums are
+  // taken once (dE/dt adot = Ephi0 phidot psidot + Etheta0 thetadot psidot +
+  // Etheta1 thetadot phidot).
+  V3 adot = V3(s.grad[3][0], s.grad[4][0], s.grad[5][0]) * rates[0];
+  const T r00 = rates[0] * rates[0];
+  std::array<T, 6> along2;
+  for (int c = 0; c < 6; ++c) along2[c] = s.hess[c][0] * r00;
   V3 wb = w0 * rates[0], wdot = V3::Zero();
   out.velocity = out.ts * rates[0];
   out.accelBias.setZero();
   if (C.steered) {
     const V3 da1(s.grad[3][1], s.grad[4][1], s.grad[5][1]);
+    adot += da1 * rates[1];
     const V3 w1 = E * da1;
     wb += w1 * rates[1];
     wdot += w1 * rackNow_.accel;
     const V3 t1(s.grad[0][1], s.grad[1][1], s.grad[2][1]);
     out.velocity += t1 * rates[1];
     out.accelBias += t1 * rackNow_.accel;
+    const T r01 = 2.0 * rates[0] * rates[1], r11 = rates[1] * rates[1];
+    for (int c = 0; c < 6; ++c) along2[c] += s.hess[c][1] * r01 + s.hess[c][2] * r11;
   }
-  for (int k = 0; k < nv; ++k) {
-    const V3 da(s.grad[3][k], s.grad[4][k], s.grad[5][k]);
-    for (int l = 0; l < nv; ++l) {
-      const int h = k + l;  // (0,0) -> xx, (0,1) -> xy, (1,1) -> yy
-      const T rr = rates[k] * rates[l];
-      const V3 d2a(s.hess[3][h], s.hess[4][h], s.hess[5][h]);
-      wdot += (Ephi0 * (s.grad[4][l] * da.x()) + Etheta0 * (s.grad[5][l] * da.x()) + Etheta1 * (s.grad[5][l] * da.y()) +
-               E * d2a) * rr;
-      out.accelBias += V3(s.hess[0][h], s.hess[1][h], s.hess[2][h]) * rr;
-    }
-  }
+  wdot += Ephi0 * (adot.y() * adot.x()) + Etheta0 * (adot.z() * adot.x()) + Etheta1 * (adot.z() * adot.y()) +
+          E * V3(along2[3], along2[4], along2[5]);
+  out.accelBias += V3(along2[0], along2[1], along2[2]);
   out.omega.noalias() = out.R * wb;
   out.alphaBias.noalias() = out.R * wdot;
   // The springs and dampers of the corner through the table's lengths: the
@@ -353,17 +356,23 @@ void KinematicCar::equations(double t, const T* q, const T* v, const integ::Vec&
   if constexpr (kKeep) motions = &motions_;  // kept: fastColumnParts takes the tyres as this residual does
   std::array<CornerMotionT<T>, 4>& cm = *motions;
   for (int w = 0; w < 4; ++w) cornerMotion(w, q[TravelQ + w], v[TravelV + w], cm[w], true);
+  // The wheel centres relative to their carriers' origins, chassis axes
+  // (the bars, the tyres and the spins read them).
+  std::array<V3, 4> centreArm;
+  for (int w = 0; w < 4; ++w) centreArm[w].noalias() = cm[w].R * corners_[w].centre;
   // Anti-roll bars between the wheel centres and the chassis, on the
   // travels: a pair of forces at the same point, working on the travel alone.
   std::array<T, 4> Qtravel{T(0.0), T(0.0), T(0.0), T(0.0)};
   for (const AntiRollBarSpec& bar : spec.antiRollBars) {
     auto centreZ = [&](int w) -> T {
-      return (cm[w].t + cm[w].R * corners_[w].centre).z() - vehicle_.layout.wheelCentreAtDesign[w].z();
+      return (cm[w].t.z() + centreArm[w].z()) - vehicle_.layout.wheelCentreAtDesign[w].z();
     };
     const T f = bar.rate * (centreZ(bar.left) - centreZ(bar.right));
     for (const auto& [w, sign] : {std::pair{bar.left, 1.0}, std::pair{bar.right, -1.0}}) {
-      const V3 centreRate = cm[w].ts + cm[w].ws.cross(V3(cm[w].R * corners_[w].centre));
-      Qtravel[w] -= sign * f * centreRate.z();
+      // d/d(travel) of the centre's height: ts + ws x arm, its z.
+      const V3& ws = cm[w].ws;
+      const T centreRateZ = cm[w].ts.z() + (ws.x() * centreArm[w].y() - ws.y() * centreArm[w].x());
+      Qtravel[w] -= sign * f * centreRateZ;
     }
   }
 
@@ -390,11 +399,11 @@ void KinematicCar::equations(double t, const T* q, const T* v, const integ::Vec&
             C.spinInertia * (spinAcc * spinAxis[w] + spin * omegaC.cross(spinAxis[w]));
 
     // The tyre on its contact plane, the brake.
-    const V3 centre = m.t + m.R * C.centre;
+    const V3 centre = m.t + centreArm[w];
     tyre::WheelKinematicsT<T> k;
     k.centre = p + R0 * centre;
     k.spinAxis = R0 * yAxis;
-    k.centreVelocity = R0 * V3(V + om.cross(centre) + m.velocity + m.omega.cross(V3(centre - m.t)));
+    k.centreVelocity = R0 * V3(V + om.cross(centre) + m.velocity + m.omega.cross(centreArm[w]));
     k.spinRate = yAxis.dot(omegaC) + C.spinSign * spin;
     relativeSpin[w] = C.spinSign * spin;
     tyre::TyreOutputT<T> dual;

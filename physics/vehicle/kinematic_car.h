@@ -148,9 +148,9 @@ class KinematicCar final : public ClosedFormCar {
   Mat3 chassisAxes_ = Mat3::Identity();
   Vec3 chassisOrigin_ = Vec3::Zero();
   std::array<CornerMotion, 4> motions_;
-  // Each steered corner's table contracted along the rack at the step's
-  // rack travel (SplineGrid::RowCache): the residuals of a step evaluate it
-  // along the travel alone.
+  // Each corner's table in the travel's cell, contracted along the rack at
+  // the step's rack travel where it is steered (SplineGrid::RowCache): the
+  // residuals of a step evaluate cubics in the travel.
   mutable std::array<mb::SplineGrid::RowCache, 4> rows_;
   mutable std::array<CornerPose, 4> poses_;
   // The rack at the step's time.
