@@ -3,8 +3,12 @@
 // independent reference integration.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <numbers>
+#include <vector>
 
 #include "integrator/bdf.h"
 #include "integrator/explicit.h"
@@ -269,19 +273,26 @@ struct PolicyRun {
   double x = 0;  // at the end
 };
 
-PolicyRun runDuffing(double k3, bool refreshWhenNotContracting, int jacobianEvery) {
+PolicyRun runDuffing(double k3, bool refreshWhenNotContracting, int jacobianEvery,
+                     const std::function<void(integ::BdfOptions&)>& adjust = {}, std::vector<double>* path = nullptr,
+                     double h = 0.01) {
   DuffingOscillator dae(k3);
   integ::BdfOptions o;
   o.newtonIterations = 2;  // in full: every step measures Newton's contraction
   o.jacobianEvery = jacobianEvery;
   o.refreshWhenNotContracting = refreshWhenNotContracting;
+  if (adjust) adjust(o);
   integ::BdfIntegrator bdf(dae, o);
   Vec q(1), v(1);
   q << 1.0;
   v << 0.0;
   integ::Message msg;
   EXPECT_EQ(bdf.initialize(0, q, v, msg), integ::EvalStatus::Ok);
-  for (int i = 0; i < 400; ++i) EXPECT_TRUE(bdf.step(0.01).ok());
+  const int steps = static_cast<int>(std::lround(4.0 / h));
+  for (int i = 0; i < steps; ++i) {
+    EXPECT_TRUE(bdf.step(h).ok());
+    if (path) path->push_back(bdf.current().q(0));
+  }
   return {bdf.counters(), bdf.current().q(0)};
 }
 
@@ -305,6 +316,67 @@ TEST(Bdf, WithoutConstraintsThePeriodicJacobianWaitsForNewtonToSayItIsStale) {
   const PolicyRun hard = runDuffing(3000.0, true, 20), never = runDuffing(3000.0, true, 0);
   EXPECT_GT(hard.counters.jacobians - hard.counters.rescues - hard.counters.refreshes, 1);
   EXPECT_LT(hard.counters.newtonIterations, never.counters.newtonIterations);
+}
+
+TEST(Bdf, TheEarlyEndFromTheContractionEndsWhereTheIterateIsWithinTolerance) {
+  // Hardening (the stiffness 1000 -> 2500 N/m over the swing), the
+  // Jacobian of the first step only: a chord iteration contracting at a
+  // steady rate. Ending the count where the correction is within tolerance
+  // takes a second residual at the steps whose first correction is a few
+  // tolerances; judged by the iterate (the contraction's error estimate,
+  // BdfOptions::earlyEndFromContraction), most of them end at one. Each
+  // step's iterate is checked against the same step (the same history)
+  // solved by Newton to a tolerance far below: within tolerance, in the
+  // integrator's own norm (the weighted RMS of [dq; h' dv]).
+  const double h = 0.01, tol = 1e-3;
+  DuffingOscillator dae(500.0), probeDae(500.0);
+  auto options = [&](bool fromContraction) {
+    integ::BdfOptions o;
+    o.newtonIterations = 2;
+    o.jacobianEvery = 0;
+    o.stopWithinTolerance = true;
+    o.earlyEndFromContraction = fromContraction;
+    o.atol = o.rtol = tol;
+    return o;
+  };
+  integ::BdfOptions exactOptions;
+  exactOptions.newtonIterations = 0;  // to tolerance, and far below the step's
+  exactOptions.atol = exactOptions.rtol = 1e-12;
+  exactOptions.jacobianEvery = 1;
+  long residuals[2] = {0, 0};
+  double worst = 0;
+  int endedEarly = 0;
+  for (bool fromContraction : {false, true}) {
+    integ::IntegratorState state;
+    integ::BdfIntegrator bdf(dae, options(fromContraction)), exact(probeDae, exactOptions);
+    bdf.bindState(state);
+    Vec q(1), v(1);
+    q << 1.0;
+    v << 0.0;
+    integ::Message msg;
+    ASSERT_EQ(bdf.initialize(0, q, v, msg), integ::EvalStatus::Ok);
+    for (int i = 0; i < 2000; ++i) {
+      integ::IntegratorState probe = state;
+      const integ::StepReport rep = bdf.step(h);
+      ASSERT_TRUE(rep.ok());
+      if (!fromContraction || i < 2) continue;  // (the start-up's steps are of order one)
+      endedEarly += rep.iterations == 1 && rep.correction > 1.0;
+      exact.bindState(probe);
+      ASSERT_TRUE(exact.step(h).ok());
+      const integ::SolutionPoint &got = state.node(0), &solved = probe.node(0), &before = probe.node(1);
+      const double w = 1.0 / (tol + tol * std::abs(solved.q(0) - before.q(0)));
+      const double hPrime = 2.0 * h / 3.0;  // BDF2 on a uniform grid
+      const double dq = (got.q(0) - solved.q(0)) * w, dv = hPrime * (got.v(0) - solved.v(0)) * w;
+      worst = std::max(worst, std::sqrt(0.5 * (dq * dq + dv * dv)));
+    }
+    residuals[fromContraction] = bdf.counters().newtonIterations;
+  }
+  std::printf("residuals: plain early end %ld, judged by the iterate %ld (%d steps ended at a correction above "
+              "tolerance); the iterates' largest error %.3g tolerances\n",
+              residuals[0], residuals[1], endedEarly, worst);
+  EXPECT_GT(endedEarly, 200);
+  EXPECT_LT(residuals[1], residuals[0] - 200);
+  EXPECT_LE(worst, 1.0);
 }
 
 TEST(Bdf, OrderTwoStartsAtOrderOneAndRefactorsOnceForTheNewStepCoefficient) {

@@ -65,12 +65,13 @@ TEST_P(NewtonEarlyEnd, EndsWithinToleranceAsCloseToTheConvergedRunAndNeverDearer
   fineSpec.integrator.bdf.jacobianEvery = c.rung == vehicle::Fidelity::Linkage ? 20 : 1;
   const scenario::RunResult fine = run(fineSpec), stopped = run(early), full = run(fullSpec);
   ASSERT_TRUE(fine.ok && stopped.ok && full.ok);
-  // Iterations a step (measured: J-turn planar / kinematic 1.14 / 1.30
-  // against 2.00 in full; sine with dwell 1.57 / 1.79 against 2.00; rough
-  // road, kinematic, on its enveloping tyres, 2.17 both: its steps are
-  // refined and rescued, and the early end does not come into it; the
-  // linkage: J-turn 1.24 against 2.00, curb strike on its enveloping tyres
-  // 1.68 against 2.12).
+  // Iterations a step (measured: J-turn planar / kinematic 1.04 / 1.16
+  // against 2.00 in full, the closed forms judging the iterate by the
+  // contraction, BdfOptions::earlyEndFromContraction; sine with dwell
+  // 1.45 / 1.47 against 2.00; rough road, kinematic, on its enveloping
+  // tyres, 2.17 both: its steps are refined and rescued, and the early end
+  // does not come into it; the linkage: J-turn 1.24 against 2.00, curb
+  // strike on its enveloping tyres 1.69 against 2.12).
   const double perStep = iterationsPerStep(stopped), perStepFull = iterationsPerStep(full);
   EXPECT_GE(perStepFull, 2.0);
   EXPECT_LE(perStep, perStepFull);
@@ -79,8 +80,8 @@ TEST_P(NewtonEarlyEnd, EndsWithinToleranceAsCloseToTheConvergedRunAndNeverDearer
   }
   // Against the converged run, within a tenth of a per cent of the count in
   // full (measured: the same to the digits shown, e.g. J-turn planar
-  // 0.536 %, kinematic 0.326 %, linkage 0.200 %, sine with dwell 0.201 /
-  // 0.111 %, curb strike on the linkage 0.819 %).
+  // 0.535 %, kinematic 0.326 %, linkage 0.200 %, sine with dwell 0.149 /
+  // 0.055 %, curb strike on the linkage 0.754 %).
   const double eStopped = yawAndLateralRmsPercent(fine, stopped), eFull = yawAndLateralRmsPercent(fine, full);
   EXPECT_LT(eStopped, eFull + 0.1);
   std::printf("%s on %s: %.3f iterations a step (in full %.3f); %.3f %% from the converged run (in full %.3f %%)\n",

@@ -132,7 +132,9 @@ struct FidelitySpec {
   // the state by less than the tolerance). From the BDF predictor one
   // iteration is within tolerance at many steps: where the motion is smooth
   // a step costs one residual instead of the count's two (the J-turn: the
-  // linkage 1.3 a step, the planar rung 1.1), where it is not (a rough road,
+  // linkage 1.3 a step, the planar rung 1.05, whose closed form also ends
+  // where the iterate is within tolerance by Newton's contraction:
+  // integ::BdfOptions::earlyEndFromContraction), where it is not (a rough road,
   // a curb) no more than the count, and the early end loses no accuracy
   // against the count in full (RESULTS 6b, tests/test_newton_early_end.cpp).
   // Not in the tyres' low-speed range (Simulation::step): there the count in
