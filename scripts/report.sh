@@ -195,8 +195,9 @@ bench_table() {
     }
     echo "Where the planar rung's step goes (sedan.toml \`--fidelity planar\`; self instructions per step"
     echo "over the 500 steps between the 1 s and the 6 s run, the functions above 2 %): the closed form's"
-    echo "equations (PlanarCar::equations: about 1.2 residuals a step, Newton ending at the first iteration"
-    echo "within tolerance; their [dual] instance, the exact Jacobian, taken once here: Newton never found it stale), the"
+    echo "equations (PlanarCar::equations: about 1.05 residuals a step, Newton ending at the first iteration"
+    echo "within tolerance, or whose iterate is by Newton's contraction; their [dual] instance, the exact"
+    echo "Jacobian, taken once here: Newton never found it stale), the"
     echo "tyres, the BDF step's own work (substep, newton, the kernels of bdf_kernels.h) and the step's"
     echo "acceptance (each wheel's ground for the next step, its slip state). No function holds a quarter"
     echo "of the step: the 6k target asks for every part halved, not one removed."
@@ -206,8 +207,10 @@ bench_table() {
     echo "Where the kinematic rung's step goes (sedan.toml \`--fidelity kinematic\`, its closed form,"
     echo "physics/vehicle/kinematic_car.h; the same measure): the corners' tables (SplineGrid::eval: the"
     echo "steered corners' are bicubic in travel and rack, six pose components and the springs' lengths"
-    echo "with their first and second derivatives), the corners' motion from them (cornerMotion) and the"
-    echo "residual's own algebra, for each of the step's residuals (about one: Newton ends at the first iteration within tolerance; a steered corner's table contracted along the rack once a step)."
+    echo "with their first and second derivatives; each corner's cell kept as cubics in the travel, contracted"
+    echo "along the rack once a step), the corners' motion from them (cornerMotion) and the residual's own"
+    echo "algebra, for each of the step's residuals (about one: Newton ends at the first iteration within"
+    echo "tolerance, or whose iterate is by Newton's contraction)."
     echo
     profileTable kinematic
     echo

@@ -152,7 +152,7 @@ void fidelitySection(std::ostream& md, int repeats, const std::string& imageDir)
      << "rung's certified range, and back after a calm second (scenario/fidelity_policy.h); the label gives its "
      << "share of steps on the planar model and its switches.\n\n"
      << "Each rung at 10 ms with the default policy (Jacobian every 200 steps, on the closed forms once Newton finds it stale; at most 2 Newton iterations on "
-     << "every rung, ending at the first within tolerance: fidelity.newton_stops_within_tolerance), and the "
+     << "every rung, ending at the first within tolerance: fidelity.newton_stops_within_tolerance; on the closed forms also where the iterate is by Newton's contraction), and the "
      << "kinematic rung converged (1 ms, Newton to tolerance, Jacobian every step: its modelling error alone), "
      << "against the linkage converged at 1 ms; sedan.toml. Wall time per manoeuvre step, no telemetry (median of " << repeats
      << "); RMS differences of yaw rate and lateral acceleration (as % of the linkage's peak on the manoeuvres "
