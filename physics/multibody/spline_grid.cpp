@@ -222,7 +222,7 @@ void SplineGrid::eval(const T& x, double y, RowCache& cache, SampleT<T>& out) co
     cache.ey = 0;
     cache.outY = false;
     if (twoD) j = locate(y_, y, uy, cache.ey, cache.outY);
-    const HermiteWeights<double> wy = hermite(uy, y_.step);
+    const HermiteWeights<double> wy = twoD ? hermite(uy, y_.step) : HermiteWeights<double>{};
     const std::array<double, 4>* wk[3] = {&wy.w0, &wy.w1, &wy.w2};
     for (int c = 0; c < components_; ++c) {
       for (int a = 0; a < 2; ++a) {

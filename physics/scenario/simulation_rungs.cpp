@@ -70,7 +70,7 @@ std::unique_ptr<integ::Integrator> Simulation::makeIntegrator(integ::Dae& dae, b
     integ::BdfOptions o = is.bdf;
     o.stopWithinTolerance = spec().fidelity.stopWithinTolerance;  // every rung; FidelitySpec says why
     if (derived) o.newtonIterations = spec().fidelity.newtonIterations;
-    o.earlyEndFromContraction = derived && o.stopWithinTolerance;  // BdfOptions says why the closed forms
+    o.earlyEndFromContraction = derived && o.stopWithinTolerance;  // the closed forms': BdfOptions says why
     return std::make_unique<integ::BdfIntegrator>(dae, o);
   }
   integ::ExplicitOptions o = is.explicitMethod;
